@@ -1,0 +1,50 @@
+#pragma once
+// Finds and decodes the textures a flattened scene's materials name (scene-format.md §8),
+// one decode per file however many objects use it.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "flatten/flatten.h"
+
+namespace whitted {
+
+enum class MissingTexturePolicy {
+    Error,    // a texture that cannot be found or decoded makes the load fail
+    Checker,  // draw it as a magenta/black checkerboard, with a warning
+};
+
+struct TextureOptions {
+    std::vector<std::string> search_dirs;  // user-given, tried after the built-in places
+    // Answers for textures that were missing before: name as written in the scene → file.
+    std::map<std::string, std::string> overrides;
+    MissingTexturePolicy missing = MissingTexturePolicy::Error;
+};
+
+struct MissingTexture {
+    std::string name;                // as written in the scene
+    SourceLoc loc;                   // of the `texture` keyword
+    std::vector<std::string> tried;  // every path looked at, in order
+    std::string reason;              // "not found" or the decoder's complaint
+};
+
+// The places FILE is looked for, in order: as written if absolute; relative to the scene
+// file's directory; to its parent; to the current directory; then each search dir.
+// `\` is read as a directory separator (in FILE and in the search dirs). Every path returned is
+// absolute and normalised, without repeats (a scene in the current directory tries it once).
+std::vector<std::string> texture_candidates(const std::string& name, const std::string& scene_path,
+                                            const std::vector<std::string>& search_dirs);
+
+// Fills flat.textures and each material's texture index. Each file is decoded once however many
+// materials name it. `options.overrides[name]`, when present, is tried before the built-in places.
+// A file that is found but cannot be decoded does not end the search: later places are still
+// tried (with a warning if one of them works). Returns the textures that could not be had, each
+// once, with the first `texture` keyword that named it; under Error each is an error diagnostic,
+// under Checker they are drawn as a checkerboard and a warning is added.
+std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string& scene_path,
+                                          const TextureOptions& options, std::vector<Diagnostic>& diagnostics);
+
+// A visible stand-in for a missing texture: magenta and black squares.
+TextureImage checker_texture();
+
+}  // namespace whitted
