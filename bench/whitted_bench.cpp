@@ -1,0 +1,154 @@
+// Micro-benchmarks (Google Benchmark): BVH build, primary- and shadow-ray throughput, and a full
+// render's thread scaling. Build with -DWHITTED_BUILD_BENCH=ON in Release; run build/bench/whitted_bench.
+// Ray throughput is reported as the counter "rays" (rays per second of wall time); the /threads:N
+// argument is the number of std::threads sharing each batch of rays.
+#include <atomic>
+#include <memory>
+#include <thread>
+
+#include <benchmark/benchmark.h>
+
+#include "accel/instance_geometry.h"
+#include "bench_scenes.h"
+#include "film/image.h"
+#include "render/renderer.h"
+
+namespace whitted::bench {
+namespace {
+
+// Runs body(begin, end) over [0, n) in chunks shared by `threads` threads.
+template <class Body>
+void parallel_for(std::size_t n, int threads, Body body) {
+    constexpr std::size_t kChunk = 2048;
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+        for (std::size_t b; (b = next.fetch_add(kChunk)) < n;) body(b, std::min(n, b + kChunk));
+    };
+    std::vector<std::thread> pool;
+    for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+}
+
+struct Fixture {
+    Scene scene;
+    std::vector<Ray> primary;
+    std::vector<Ray> shadow;         // from the primary hits toward the light
+    std::vector<float> shadow_reach;
+};
+
+std::unique_ptr<Fixture> make_fixture(FlatScene flat, int width, int height) {
+    auto f = std::make_unique<Fixture>();
+    f->scene = accelerate(std::move(flat));
+    f->primary = camera_rays(f->scene.flat.camera, width, height);
+    const glm::vec3 light = f->scene.flat.lights[0].position;
+    for (const Ray& r : f->primary) {
+        Hit hit;
+        if (!intersect_nearest(f->scene.bvh, f->scene.flat.instances, r, 0.0f, INFINITY, hit)) continue;
+        glm::vec3 p = r.at(hit.t);
+        glm::vec3 to_light = light - p;
+        float d = glm::length(to_light);
+        // Start a little toward the light (as the integrator does along the normal).
+        glm::vec3 dir = to_light / d;
+        f->shadow.push_back(Ray{p + 1e-3f * dir, dir});
+        f->shadow_reach.push_back(d - 1e-3f);
+    }
+    return f;
+}
+
+Fixture& spheres_1k() {
+    static auto f = make_fixture(random_scene(1000, false), 640, 480);
+    return *f;
+}
+Fixture& grid_1m() {
+    static auto f = make_fixture(grid_scene(1000), 640, 480);
+    return *f;
+}
+
+void primary(benchmark::State& state, Fixture& f) {
+    const int threads = int(state.range(0));
+    std::atomic<std::uint64_t> hits{0};
+    for (auto _ : state) {
+        parallel_for(f.primary.size(), threads, [&](std::size_t b, std::size_t e) {
+            std::uint64_t n = 0;
+            for (std::size_t i = b; i < e; ++i) {
+                Hit hit;
+                n += intersect_nearest(f.scene.bvh, f.scene.flat.instances, f.primary[i], 0.0f, INFINITY, hit);
+            }
+            hits += n;
+        });
+    }
+    state.counters["rays"] = benchmark::Counter(double(f.primary.size()) * state.iterations(), benchmark::Counter::kIsRate);
+    state.counters["hit_fraction"] = double(hits) / (double(f.primary.size()) * state.iterations());
+}
+
+void shadow(benchmark::State& state, Fixture& f) {
+    const int threads = int(state.range(0));
+    std::atomic<std::uint64_t> blocked{0};
+    for (auto _ : state) {
+        parallel_for(f.shadow.size(), threads, [&](std::size_t b, std::size_t e) {
+            std::uint64_t n = 0;
+            for (std::size_t i = b; i < e; ++i)
+                n += transmittance(f.scene.bvh, f.scene.flat.instances, f.scene.flat.materials, f.shadow[i], 0.0f,
+                                   f.shadow_reach[i]).x == 0.0f;
+            blocked += n;
+        });
+    }
+    state.counters["rays"] = benchmark::Counter(double(f.shadow.size()) * state.iterations(), benchmark::Counter::kIsRate);
+    state.counters["blocked_fraction"] = double(blocked) / (double(f.shadow.size()) * state.iterations());
+}
+
+void BM_PrimarySpheres1k(benchmark::State& s) { primary(s, spheres_1k()); }
+void BM_ShadowSpheres1k(benchmark::State& s) { shadow(s, spheres_1k()); }
+void BM_PrimaryGrid1M(benchmark::State& s) { primary(s, grid_1m()); }
+void BM_ShadowGrid1M(benchmark::State& s) { shadow(s, grid_1m()); }
+
+void BM_BvhBuild(benchmark::State& state) {
+    const int n = int(state.range(0));
+    int side = int(std::lround(std::sqrt(double(n))));
+    const std::vector<Instance> source = grid_scene(side).instances;
+    std::size_t nodes = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        std::vector<Instance> instances = source;
+        state.ResumeTiming();
+        Bvh bvh = build_bvh(instances);
+        nodes = bvh.nodes.size();
+        benchmark::DoNotOptimize(bvh.nodes.data());
+    }
+    state.counters["instances"] = double(source.size());
+    state.counters["nodes"] = double(nodes);
+    state.counters["MB"] = double(nodes * sizeof(Bvh4Node) + source.size() * sizeof(Instance)) / 1e6;
+}
+
+// The whole integrator (shadows, reflections) on a 1920×1080 image: thread scaling of render().
+void BM_Render1080p(benchmark::State& state) {
+    static Scene scene = [] {
+        FlatScene flat = random_scene(1000, true, 7);
+        flat.materials[0].reflect = glm::vec3(0.3f);
+        flat.materials[0].specular = glm::vec3(0.5f);
+        flat.materials[0].shine = 30;
+        flat.lights.push_back(Light{LightType::Point, {-30, 20, 30}, {0, -1, 0}, glm::vec3(0.5f)});
+        return accelerate(std::move(flat));
+    }();
+    RenderOptions o;
+    o.width = 1920;
+    o.height = 1080;
+    o.threads = int(state.range(0));
+    Image image(o.width, o.height);
+    RayCounts rays;
+    for (auto _ : state) rays += render(scene, o, image).rays;
+    state.counters["rays"] = benchmark::Counter(double(rays.total()), benchmark::Counter::kIsRate);
+}
+
+BENCHMARK(BM_BvhBuild)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PrimarySpheres1k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ShadowSpheres1k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PrimaryGrid1M)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ShadowGrid1M)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Render1080p)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace whitted::bench
+
+BENCHMARK_MAIN();

@@ -1,0 +1,245 @@
+// Binned surface-area-heuristic build (Wald 2007) of a binary tree: per node, centroids are
+// binned along the widest centroid axis and the cheapest of the bin boundaries is chosen.
+// O(n log n) time, O(n) memory. The binary tree is then collapsed into the 4-wide node array
+// that traversal reads (each wide node adopts the largest-area grandchildren until it has four
+// children), and the instances are reordered to leaf order.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "accel/bvh.h"
+#include "accel/instance_geometry.h"
+
+namespace whitted {
+namespace {
+
+constexpr int kBins = 16;
+constexpr std::uint32_t kMaxLeaf = 8;  // <= Bvh4Node::kMaxLeafSize
+// SAH costs relative to one instance test (an object-space transform plus a quadric: several
+// times the cost of one 4-wide box test, which checks four children at once).
+constexpr float kTraversalCost = 0.5f;
+// Below this depth SAH splits are replaced by median splits, which bounds the depth (and so
+// the traversal stack, see bvh_traverse.cpp) even for pathological inputs.
+constexpr std::uint32_t kSahDepthLimit = 64;
+
+struct PrimRef {
+    Bounds box;
+    glm::vec3 centre;
+    std::uint32_t index;
+};
+
+struct BinNode {
+    Bounds box;
+    std::uint32_t first = 0;   // leaf: first instance (in refs order); inner: left child
+    std::uint32_t second = 0;  // inner: right child
+    std::uint32_t count = 0;   // leaf: instances (> 0); inner: 0
+};
+
+struct Task {
+    std::uint32_t begin, end;
+    std::uint32_t node;  // index of the BinNode to fill
+    std::uint32_t depth;
+};
+
+// World bounds padded by a few float ulps of their magnitude, so that a hit computed in object
+// space (with its own rounding) is never outside the box that leads to it.
+Bounds padded_world_bounds(const Instance& inst) {
+    Bounds b = world_bounds(inst);
+    const glm::vec3 mag = glm::max(glm::abs(b.lo), glm::abs(b.hi));
+    const float m = std::max(std::max(mag.x, mag.y), mag.z);
+    const glm::vec3 pad = glm::vec3(1e-5f * m + 1e-30f);
+    b.lo -= pad;
+    b.hi += pad;
+    return b;
+}
+
+std::vector<BinNode> build_binary(std::vector<PrimRef>& refs) {
+    const std::uint32_t n = static_cast<std::uint32_t>(refs.size());
+    std::vector<BinNode> nodes;
+    nodes.reserve(2 * std::size_t(n));
+    nodes.emplace_back();
+    std::vector<Task> stack{{0, n, 0, 0}};
+    while (!stack.empty()) {
+        const Task task = stack.back();
+        stack.pop_back();
+
+        Bounds box, centres;
+        for (std::uint32_t i = task.begin; i < task.end; ++i) {
+            box.grow(refs[i].box);
+            centres.grow(refs[i].centre);
+        }
+        const std::uint32_t count = task.end - task.begin;
+        auto make_leaf = [&] {
+            BinNode& node = nodes[task.node];
+            node.box = box;
+            node.first = task.begin;
+            node.count = count;
+        };
+        if (count == 1) { make_leaf(); continue; }
+
+        const glm::vec3 ext = centres.extent();
+        const int axis = ext.x > ext.y ? (ext.x > ext.z ? 0 : 2) : (ext.y > ext.z ? 1 : 2);
+        auto median_split = [&] {
+            const std::uint32_t mid = task.begin + count / 2;
+            std::nth_element(refs.begin() + task.begin, refs.begin() + mid, refs.begin() + task.end,
+                             [axis](const PrimRef& a, const PrimRef& b) { return a.centre[axis] < b.centre[axis]; });
+            return mid;
+        };
+        std::uint32_t mid;
+        if (!(ext[axis] > 0.0f) || task.depth >= kSahDepthLimit) {
+            // No plane separates the centres (or the tree is already deep): split at the median.
+            if (count <= kMaxLeaf) { make_leaf(); continue; }
+            mid = median_split();
+        } else {
+            struct Bin { Bounds box; std::uint32_t count = 0; };
+            std::array<Bin, kBins> bins{};
+            const float lo = centres.lo[axis];
+            const float scale = kBins / ext[axis];
+            auto bin_of = [&](const PrimRef& r) {
+                return std::min(kBins - 1, static_cast<int>((r.centre[axis] - lo) * scale));
+            };
+            for (std::uint32_t i = task.begin; i < task.end; ++i) {
+                Bin& b = bins[bin_of(refs[i])];
+                b.box.grow(refs[i].box);
+                ++b.count;
+            }
+            // Sweep from the right to get the cost of every right side, then from the left.
+            std::array<float, kBins> right_cost{};
+            Bounds acc;
+            std::uint32_t acc_n = 0;
+            for (int i = kBins - 1; i > 0; --i) {
+                acc.grow(bins[i].box);
+                acc_n += bins[i].count;
+                right_cost[i] = acc.surface_area() * float(acc_n);
+            }
+            float best = std::numeric_limits<float>::infinity();
+            int best_split = -1;
+            acc = Bounds();
+            acc_n = 0;
+            for (int i = 0; i < kBins - 1; ++i) {
+                acc.grow(bins[i].box);
+                acc_n += bins[i].count;
+                const float cost = acc.surface_area() * float(acc_n) + right_cost[i + 1];
+                if (acc_n > 0 && acc_n < count && cost < best) { best = cost; best_split = i + 1; }
+            }
+            const float leaf_cost = float(count);
+            const float area = box.surface_area();
+            const float split_cost = kTraversalCost + (area > 0.0f ? best / area : leaf_cost);
+            if (best_split < 0 || (split_cost >= leaf_cost && count <= kMaxLeaf)) {
+                if (count <= kMaxLeaf) { make_leaf(); continue; }
+                mid = median_split();
+            } else {
+                auto it = std::partition(refs.begin() + task.begin, refs.begin() + task.end,
+                                         [&](const PrimRef& r) { return bin_of(r) < best_split; });
+                mid = static_cast<std::uint32_t>(it - refs.begin());
+            }
+        }
+        const std::uint32_t left = static_cast<std::uint32_t>(nodes.size());
+        nodes.emplace_back();
+        nodes.emplace_back();
+        BinNode& node = nodes[task.node];
+        node.box = box;
+        node.first = left;
+        node.second = left + 1;
+        node.count = 0;
+        stack.push_back({mid, task.end, left + 1, task.depth + 1});
+        stack.push_back({task.begin, mid, left, task.depth + 1});
+    }
+    return nodes;
+}
+
+// Depth-first collapse of the binary subtree at `root` into 4-wide nodes; returns the index of
+// the wide node made for it.
+std::uint32_t collapse(const std::vector<BinNode>& bin, std::uint32_t root, std::vector<Bvh4Node>& out) {
+    // Open the largest-area inner node of the set until there are four (or only leaves).
+    std::uint32_t set[4] = {root};
+    int size = 1;
+    while (size < 4) {
+        int pick = -1;
+        float pick_area = -1.0f;
+        for (int i = 0; i < size; ++i) {
+            const BinNode& c = bin[set[i]];
+            if (c.count == 0 && c.box.surface_area() > pick_area) { pick = i; pick_area = c.box.surface_area(); }
+        }
+        if (pick < 0) break;
+        const BinNode& c = bin[set[pick]];
+        set[pick] = c.first;
+        set[size++] = c.second;
+    }
+    const std::uint32_t index = static_cast<std::uint32_t>(out.size());
+    out.emplace_back();
+    {
+        Bvh4Node& node = out[index];
+        for (int s = 0; s < 4; ++s) {
+            for (int a = 0; a < 3; ++a) {
+                node.box[a][s] = std::numeric_limits<float>::infinity();
+                node.box[3 + a][s] = -std::numeric_limits<float>::infinity();
+            }
+            node.child[s] = 0;
+            node.pad[s] = 0;
+        }
+    }
+    for (int s = 0; s < size; ++s) {
+        const BinNode& c = bin[set[s]];
+        std::uint32_t ref;
+        if (c.count > 0) {
+            ref = Bvh4Node::kLeafBit | (c.first << 4) | (c.count - 1);
+        } else {
+            ref = collapse(bin, set[s], out);  // may reallocate `out`: index again below
+        }
+        Bvh4Node& node = out[index];
+        for (int a = 0; a < 3; ++a) {
+            node.box[a][s] = c.box.lo[a];
+            node.box[3 + a][s] = c.box.hi[a];
+        }
+        node.child[s] = ref;
+    }
+    return index;
+}
+
+}  // namespace
+
+Bvh build_bvh(std::vector<Instance>& instances) {
+    Bvh bvh;
+    const std::size_t n = instances.size();
+    if (n == 0) return bvh;
+    if (n >= Bvh4Node::kMaxInstances) throw std::length_error("too many instances for the BVH");
+
+    std::vector<PrimRef> refs(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const Bounds b = padded_world_bounds(instances[i]);
+        refs[i] = {b, b.centre(), i};
+    }
+    {
+        const std::vector<BinNode> bin = build_binary(refs);
+        bvh.box = bin[0].box;
+        // About n/2 binary leaves, so about n/6 wide nodes (each has up to four children).
+        bvh.nodes.reserve(bin.size() / 3 + 1);
+        collapse(bin, 0, bvh.nodes);
+        bvh.nodes.shrink_to_fit();
+    }
+
+    // Reorder the instances to leaf order in place, following the permutation's cycles.
+    std::vector<std::uint32_t> source(n);
+    for (std::uint32_t i = 0; i < n; ++i) source[i] = refs[i].index;
+    refs.clear();
+    refs.shrink_to_fit();
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (source[i] == i) continue;
+        const Instance first = instances[i];
+        std::uint32_t j = i;
+        while (source[j] != i) {
+            const std::uint32_t k = source[j];
+            instances[j] = instances[k];
+            source[j] = j;
+            j = k;
+        }
+        instances[j] = first;
+        source[j] = j;
+    }
+    return bvh;
+}
+
+}  // namespace whitted

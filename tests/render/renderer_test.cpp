@@ -1,0 +1,91 @@
+// The image-space driver: pixel-centre rays, thread independence, cancellation.
+#include <atomic>
+
+#include <gtest/gtest.h>
+
+#include "render/renderer.h"
+#include "support/scene_builder.h"
+
+namespace whitted {
+namespace {
+
+TEST(CameraRay, GoesThroughPixelCentresWithVerticalFov) {
+    Camera cam;  // eye (0,0,1) looking down −z, tan(30°)
+    cam.tan_half_fov = 1.0f;  // 90° vertical
+    // 4×2 image (aspect 2): pixel (0,0)'s centre is at x = 0.5/4·2−1 = −0.75 of the half width
+    // (half width = aspect · tan = 2), y = 1 − 0.5 = 0.5 of the half height.
+    Ray r = camera_ray(cam, 4, 2, 0.5f, 0.5f);
+    glm::vec3 want = glm::normalize(glm::vec3(-0.75f * 2.0f, 0.5f, -1.0f));
+    EXPECT_NEAR(r.direction.x, want.x, 1e-6f);
+    EXPECT_NEAR(r.direction.y, want.y, 1e-6f);
+    EXPECT_NEAR(r.direction.z, want.z, 1e-6f);
+}
+
+Scene busy_scene() {
+    test::SceneBuilder b;
+    Material m;
+    m.reflect = glm::vec3(0.5f);
+    m.specular = glm::vec3(0.5f);
+    m.shine = 20;
+    for (int i = 0; i < 60; ++i) {
+        float x = float(i % 10) - 4.5f, y = float(i / 10) - 2.5f;
+        b.add(ShapeKind(i % 4), test::translate_scale({x, y, -5.0f - 0.5f * float(i % 3)}, glm::vec3(0.9f)), m);
+    }
+    b.light(test::point_light({2, 5, 5}, {1, 1, 1}));
+    return b.build();
+}
+
+TEST(Renderer, ImageIsByteIdenticalForAnyThreadCount) {
+    Scene scene = busy_scene();
+    RenderOptions o;
+    o.width = 97;  // not a multiple of the tile size
+    o.height = 61;
+    o.tile_size = 16;
+    Image one(o.width, o.height), two(o.width, o.height), five(o.width, o.height);
+    o.threads = 1;
+    render(scene, o, one);
+    o.threads = 2;
+    render(scene, o, two);
+    o.threads = 5;
+    render(scene, o, five);
+    EXPECT_EQ(one.rgb, two.rgb);
+    EXPECT_EQ(one.rgb, five.rgb);
+    size_t lit = 0;
+    for (auto v : one.rgb) lit += v != 0;
+    EXPECT_GT(lit, one.rgb.size() / 4) << "the test scene should fill much of the image";
+}
+
+TEST(Renderer, CancelStopsAfterTheCurrentRowsAndLeavesTheRestBlack) {
+    Scene scene = busy_scene();
+    std::atomic<bool> cancel{false};
+    std::atomic<int> tiles{0};
+    RenderOptions o;
+    o.width = 256;
+    o.height = 256;
+    o.threads = 2;
+    o.cancel = &cancel;
+    o.on_tile = [&](const Tile&) {
+        if (++tiles == 3) cancel = true;
+    };
+    Image img(o.width, o.height);
+    RenderStats s = render(scene, o, img);
+    EXPECT_TRUE(s.cancelled);
+    EXPECT_GE(s.tiles_done, 3);
+    EXPECT_LT(s.tiles_done, s.tiles_total / 2);
+    // The last tile (bottom right) was never reached: still black.
+    for (int y = 224; y < 256; ++y)
+        for (int x = 224; x < 256; ++x) ASSERT_EQ(img.at(x, y), glm::u8vec3(0)) << x << "," << y;
+}
+
+TEST(Renderer, ToByteRoundsAndClamps) {
+    EXPECT_EQ(to_byte(0.0f), 0);
+    EXPECT_EQ(to_byte(1.0f), 255);
+    EXPECT_EQ(to_byte(2.5f), 255);
+    EXPECT_EQ(to_byte(-1.0f), 0);
+    EXPECT_EQ(to_byte(0.5f), 128);           // ⌊127.5 + 0.5⌋
+    EXPECT_EQ(to_byte(100.0f / 255.0f), 100);
+    EXPECT_EQ(to_byte(std::nanf("")), 0);
+}
+
+}  // namespace
+}  // namespace whitted
