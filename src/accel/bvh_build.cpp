@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -24,10 +25,34 @@ constexpr float kTraversalCost = 0.5f;
 // the traversal stack, see bvh_traverse.cpp) even for pathological inputs.
 constexpr std::uint32_t kSahDepthLimit = 64;
 
+// Four floats in one SIMD register (GCC/Clang vector extension: SSE on x86, NEON on ARM).
+typedef float V4 __attribute__((vector_size(16)));
+inline V4 vmin(V4 a, V4 b) { return a < b ? a : b; }
+inline V4 vmax(V4 a, V4 b) { return a > b ? a : b; }
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+// lo.w carries the instance index (bit pattern), hi.w is unused; the centre is (lo + hi) / 2,
+// kept doubled as lo + hi.
 struct PrimRef {
-    Bounds box;
-    glm::vec3 centre;
-    std::uint32_t index;
+    V4 lo, hi;
+    std::uint32_t index() const {
+        std::uint32_t i;
+        float f = lo[3];
+        std::memcpy(&i, &f, 4);
+        return i;
+    }
+};
+
+struct Box {
+    V4 lo = {kInf, kInf, kInf, kInf}, hi = {-kInf, -kInf, -kInf, -kInf};
+    void grow(V4 l, V4 h) { lo = vmin(lo, l); hi = vmax(hi, h); }
+    void grow(const Box& b) { grow(b.lo, b.hi); }
+    float area() const {
+        if (!(lo[0] <= hi[0] && lo[1] <= hi[1] && lo[2] <= hi[2])) return 0.0f;
+        const V4 e = hi - lo;
+        return 2.0f * (e[0] * e[1] + e[1] * e[2] + e[2] * e[0]);
+    }
+    Bounds bounds() const { return Bounds{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
 };
 
 struct BinNode {
@@ -41,7 +66,19 @@ struct Task {
     std::uint32_t begin, end;
     std::uint32_t node;  // index of the BinNode to fill
     std::uint32_t depth;
+    Box box, centres;  // of refs [begin, end) (centres doubled), when `known`
+    bool known;
 };
+
+void bounds_of(const std::vector<PrimRef>& refs, std::uint32_t begin, std::uint32_t end, Box& box, Box& centres) {
+    box = Box();
+    centres = Box();
+    for (std::uint32_t i = begin; i < end; ++i) {
+        box.grow(refs[i].lo, refs[i].hi);
+        const V4 c = refs[i].lo + refs[i].hi;
+        centres.grow(c, c);
+    }
+}
 
 // World bounds padded by a few float ulps of their magnitude, so that a hit computed in object
 // space (with its own rounding) is never outside the box that leads to it.
@@ -60,72 +97,76 @@ std::vector<BinNode> build_binary(std::vector<PrimRef>& refs) {
     std::vector<BinNode> nodes;
     nodes.reserve(2 * std::size_t(n));
     nodes.emplace_back();
-    std::vector<Task> stack{{0, n, 0, 0}};
+    std::vector<Task> stack{{0, n, 0, 0, {}, {}, false}};
     while (!stack.empty()) {
         const Task task = stack.back();
         stack.pop_back();
 
-        Bounds box, centres;
-        for (std::uint32_t i = task.begin; i < task.end; ++i) {
-            box.grow(refs[i].box);
-            centres.grow(refs[i].centre);
-        }
+        // The binning pass of the parent gives the children's bounds; median splits do not.
+        Box box = task.box, centres = task.centres;
+        if (!task.known) bounds_of(refs, task.begin, task.end, box, centres);
         const std::uint32_t count = task.end - task.begin;
         auto make_leaf = [&] {
             BinNode& node = nodes[task.node];
-            node.box = box;
+            node.box = box.bounds();
             node.first = task.begin;
             node.count = count;
         };
         if (count == 1) { make_leaf(); continue; }
 
-        const glm::vec3 ext = centres.extent();
-        const int axis = ext.x > ext.y ? (ext.x > ext.z ? 0 : 2) : (ext.y > ext.z ? 1 : 2);
+        const V4 ext = centres.hi - centres.lo;
+        const int axis = ext[0] > ext[1] ? (ext[0] > ext[2] ? 0 : 2) : (ext[1] > ext[2] ? 1 : 2);
+        auto centre = [axis](const PrimRef& r) { return r.lo[axis] + r.hi[axis]; };
         auto median_split = [&] {
             const std::uint32_t mid = task.begin + count / 2;
             std::nth_element(refs.begin() + task.begin, refs.begin() + mid, refs.begin() + task.end,
-                             [axis](const PrimRef& a, const PrimRef& b) { return a.centre[axis] < b.centre[axis]; });
+                             [&](const PrimRef& a, const PrimRef& b) { return centre(a) < centre(b); });
             return mid;
         };
         std::uint32_t mid;
+        Box child_box[2], child_centres[2];
+        bool known = false;
         if (!(ext[axis] > 0.0f) || task.depth >= kSahDepthLimit) {
             // No plane separates the centres (or the tree is already deep): split at the median.
             if (count <= kMaxLeaf) { make_leaf(); continue; }
             mid = median_split();
         } else {
-            struct Bin { Bounds box; std::uint32_t count = 0; };
+            struct Bin { Box box, centres; std::uint32_t count = 0; };
             std::array<Bin, kBins> bins{};
             const float lo = centres.lo[axis];
             const float scale = kBins / ext[axis];
             auto bin_of = [&](const PrimRef& r) {
-                return std::min(kBins - 1, static_cast<int>((r.centre[axis] - lo) * scale));
+                return std::min(kBins - 1, static_cast<int>((centre(r) - lo) * scale));
             };
             for (std::uint32_t i = task.begin; i < task.end; ++i) {
-                Bin& b = bins[bin_of(refs[i])];
-                b.box.grow(refs[i].box);
+                const PrimRef& r = refs[i];
+                Bin& b = bins[bin_of(r)];
+                b.box.grow(r.lo, r.hi);
+                const V4 c = r.lo + r.hi;
+                b.centres.grow(c, c);
                 ++b.count;
             }
             // Sweep from the right to get the cost of every right side, then from the left.
             std::array<float, kBins> right_cost{};
-            Bounds acc;
+            Box acc;
             std::uint32_t acc_n = 0;
             for (int i = kBins - 1; i > 0; --i) {
                 acc.grow(bins[i].box);
                 acc_n += bins[i].count;
-                right_cost[i] = acc.surface_area() * float(acc_n);
+                right_cost[i] = acc.area() * float(acc_n);
             }
-            float best = std::numeric_limits<float>::infinity();
+            float best = kInf;
             int best_split = -1;
-            acc = Bounds();
+            acc = Box();
             acc_n = 0;
             for (int i = 0; i < kBins - 1; ++i) {
                 acc.grow(bins[i].box);
                 acc_n += bins[i].count;
-                const float cost = acc.surface_area() * float(acc_n) + right_cost[i + 1];
+                const float cost = acc.area() * float(acc_n) + right_cost[i + 1];
                 if (acc_n > 0 && acc_n < count && cost < best) { best = cost; best_split = i + 1; }
             }
             const float leaf_cost = float(count);
-            const float area = box.surface_area();
+            const float area = box.area();
             const float split_cost = kTraversalCost + (area > 0.0f ? best / area : leaf_cost);
             if (best_split < 0 || (split_cost >= leaf_cost && count <= kMaxLeaf)) {
                 if (count <= kMaxLeaf) { make_leaf(); continue; }
@@ -134,18 +175,23 @@ std::vector<BinNode> build_binary(std::vector<PrimRef>& refs) {
                 auto it = std::partition(refs.begin() + task.begin, refs.begin() + task.end,
                                          [&](const PrimRef& r) { return bin_of(r) < best_split; });
                 mid = static_cast<std::uint32_t>(it - refs.begin());
+                for (int i = 0; i < kBins; ++i) {
+                    child_box[i >= best_split].grow(bins[i].box);
+                    child_centres[i >= best_split].grow(bins[i].centres);
+                }
+                known = true;
             }
         }
         const std::uint32_t left = static_cast<std::uint32_t>(nodes.size());
         nodes.emplace_back();
         nodes.emplace_back();
         BinNode& node = nodes[task.node];
-        node.box = box;
+        node.box = box.bounds();
         node.first = left;
         node.second = left + 1;
         node.count = 0;
-        stack.push_back({mid, task.end, left + 1, task.depth + 1});
-        stack.push_back({task.begin, mid, left, task.depth + 1});
+        stack.push_back({mid, task.end, left + 1, task.depth + 1, child_box[1], child_centres[1], known});
+        stack.push_back({task.begin, mid, left, task.depth + 1, child_box[0], child_centres[0], known});
     }
     return nodes;
 }
@@ -210,7 +256,9 @@ Bvh build_bvh(std::vector<Instance>& instances) {
     std::vector<PrimRef> refs(n);
     for (std::uint32_t i = 0; i < n; ++i) {
         const Bounds b = padded_world_bounds(instances[i]);
-        refs[i] = {b, b.centre(), i};
+        float index;
+        std::memcpy(&index, &i, 4);
+        refs[i] = {V4{b.lo.x, b.lo.y, b.lo.z, index}, V4{b.hi.x, b.hi.y, b.hi.z, 0.0f}};
     }
     {
         const std::vector<BinNode> bin = build_binary(refs);
@@ -223,7 +271,7 @@ Bvh build_bvh(std::vector<Instance>& instances) {
 
     // Reorder the instances to leaf order in place, following the permutation's cycles.
     std::vector<std::uint32_t> source(n);
-    for (std::uint32_t i = 0; i < n; ++i) source[i] = refs[i].index;
+    for (std::uint32_t i = 0; i < n; ++i) source[i] = refs[i].index();
     refs.clear();
     refs.shrink_to_fit();
     for (std::uint32_t i = 0; i < n; ++i) {

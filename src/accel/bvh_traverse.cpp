@@ -129,6 +129,16 @@ bool intersect_nearest(const Bvh& bvh, const std::vector<Instance>& instances, c
                     ref = n.child[i];
                     continue;
                 }
+                const int j = lowest_bit(mask);
+                mask &= mask - 1;
+                if (mask == 0) {  // two: the common case, no sorting loop
+                    const bool swap = tn[j] < tn[i];
+                    const int near = swap ? j : i, far = swap ? i : j;
+                    stack[top++] = {n.child[far], tn[far]};
+                    ref = n.child[near];
+                    continue;
+                }
+                mask |= 1 << j;
                 // Several: push all but the nearest, farthest first (insertion by distance).
                 StackEntry hits[4];
                 int count = 0;
