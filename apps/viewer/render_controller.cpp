@@ -1,0 +1,278 @@
+#include "render_controller.h"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cstring>
+#include <sstream>
+
+#include "render/renderer.h"
+
+namespace whitted::viewer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Everything in the load options that changes what a load produces.
+std::string options_key(const LoadOptions& o) {
+    std::ostringstream k;
+    k << o.lenient << '|' << int(o.textures.missing);
+    for (const auto& d : o.textures.search_dirs) k << "|d:" << d;
+    for (const auto& [name, file] : o.textures.overrides) k << "|o:" << name << '=' << file << '@' << file_stamp(file);
+    return k.str();
+}
+
+// The line a status bar shows for a load: the last error, else the last warning.
+std::string summary(const std::vector<Diagnostic>& diags) {
+    const Diagnostic* pick = nullptr;
+    for (const auto& d : diags)
+        if (d.severity == Severity::Error) pick = &d;
+    if (!pick && !diags.empty()) pick = &diags.back();
+    return pick ? pick->str() : "";
+}
+
+}  // namespace
+
+const char* state_name(RenderState s) {
+    switch (s) {
+        case RenderState::Idle: return "idle";
+        case RenderState::Loading: return "loading";
+        case RenderState::Rendering: return "rendering";
+        case RenderState::Finished: return "finished";
+        case RenderState::Stopped: return "stopped";
+        case RenderState::Failed: return "failed";
+        case RenderState::MissingTextures: return "missing textures";
+    }
+    return "?";
+}
+
+std::string file_stamp(const std::string& path) {
+    struct stat st;
+    if (::stat(path.c_str(), &st) != 0) return "";
+    std::ostringstream k;
+    k << st.st_dev << ':' << st.st_ino << ':' << st.st_size << ':' << st.st_mtim.tv_sec << '.' << st.st_mtim.tv_nsec;
+    return k.str();
+}
+
+struct RenderController::Job {
+    std::uint64_t id = 0;
+    std::string path;  // "" when the scene was given
+    LoadOptions load;
+    bool force_reload = false;
+    std::shared_ptr<const Scene> scene;
+    RenderSettings settings;
+    std::atomic<bool> cancel{false};
+    std::atomic<bool> finished{false};
+    std::thread thread;
+};
+
+RenderController::~RenderController() {
+    std::vector<std::shared_ptr<Job>> jobs;
+    {
+        std::lock_guard lock(mutex_);
+        for (auto& j : jobs_) j->cancel = true;
+        jobs.swap(jobs_);
+        current_.reset();
+    }
+    for (auto& j : jobs)
+        if (j->thread.joinable()) j->thread.join();
+}
+
+void RenderController::cancel_current_locked() {
+    if (!current_) return;
+    current_->cancel = true;
+    if (is_busy(status_.state)) {
+        status_.state = RenderState::Stopped;
+        status_.elapsed_seconds = seconds_since(started_);
+    }
+}
+
+void RenderController::begin_locked(std::shared_ptr<Job> job, const std::string& path, const RenderSettings& settings) {
+    cancel_current_locked();
+    job->id = ++next_job_;
+    job->settings = settings;
+    job->settings.width = std::max(1, settings.width);
+    job->settings.height = std::max(1, settings.height);
+    job->settings.max_depth = std::max(0, settings.max_depth);
+    job->settings.threads = std::max(0, settings.threads);
+    job->settings.tile_size = std::max(1, settings.tile_size);
+    current_ = job;
+    status_ = RenderStatus{};
+    status_.state = RenderState::Loading;
+    status_.job = job->id;
+    status_.scene_path = path;
+    status_.settings = job->settings;
+    started_ = Clock::now();
+    changed_.notify_all();
+}
+
+void RenderController::start(const std::string& scene_path, const LoadOptions& load, const RenderSettings& settings,
+                             bool force_reload) {
+    reap();
+    auto job = std::make_shared<Job>();
+    job->path = scene_path;
+    job->load = load;
+    job->force_reload = force_reload;
+    std::lock_guard lock(mutex_);
+    begin_locked(job, scene_path, settings);
+    launch(job);
+}
+
+void RenderController::start(std::shared_ptr<const Scene> scene, const RenderSettings& settings) {
+    reap();
+    auto job = std::make_shared<Job>();
+    job->scene = std::move(scene);
+    std::lock_guard lock(mutex_);
+    begin_locked(job, "", settings);
+    launch(job);
+}
+
+void RenderController::launch(std::shared_ptr<Job> job) {
+    // Called with the mutex held: the thread's first lock waits until start() has returned.
+    jobs_.push_back(job);
+    job->thread = std::thread([this, job] { run(job); });
+}
+
+void RenderController::stop() {
+    {
+        std::lock_guard lock(mutex_);
+        cancel_current_locked();
+        changed_.notify_all();
+    }
+    reap();
+}
+
+void RenderController::run(std::shared_ptr<Job> job) {
+    auto is_current = [&] { return current_ == job && !job->cancel.load(); };  // call with the mutex held
+    auto finish = [&] {
+        job->finished = true;
+        changed_.notify_all();
+    };
+
+    // 1. The scene: given, cached, or loaded now.
+    std::shared_ptr<const Scene> scene = job->scene;
+    if (!scene) {
+        const std::string key = file_stamp(job->path) + "#" + options_key(job->load);
+        LoadResult loaded;
+        bool reused = false;
+        {
+            std::lock_guard lock(mutex_);
+            if (!job->force_reload && cache_.result.ok() && cache_.path == job->path && cache_.key == key) {
+                loaded = cache_.result;
+                reused = true;
+            }
+        }
+        if (!reused) loaded = load_scene(job->path, job->load);
+
+        std::lock_guard lock(mutex_);
+        if (!reused && loaded.ok()) cache_ = Cached{job->path, key, loaded};
+        if (!is_current()) return finish();
+        status_.diagnostics = loaded.diagnostics;
+        status_.missing_textures = loaded.missing_textures;
+        status_.load_stats = loaded.stats;
+        status_.scene_reused = reused;
+        status_.message = summary(loaded.diagnostics);
+        if (!loaded.ok()) {
+            status_.state = loaded.missing_textures.empty() ? RenderState::Failed : RenderState::MissingTextures;
+            if (status_.message.empty()) status_.message = "error: the scene could not be loaded";
+            status_.elapsed_seconds = seconds_since(started_);
+            return finish();
+        }
+        scene = loaded.scene;
+    }
+
+    // 2. The render, into a private image; finished tiles are copied to the shared one.
+    const RenderSettings& s = job->settings;
+    Image work(s.width, s.height);
+    {
+        std::lock_guard lock(mutex_);
+        if (!is_current()) return finish();
+        const int ts = s.tile_size;
+        status_.state = RenderState::Rendering;
+        status_.tiles_total = ((s.width + ts - 1) / ts) * ((s.height + ts - 1) / ts);
+        image_ = Image(s.width, s.height);
+        ++image_version_;
+        changed_.notify_all();
+    }
+    RenderOptions options;
+    options.width = s.width;
+    options.height = s.height;
+    options.max_depth = s.max_depth;
+    options.mode = s.mode;
+    options.threads = s.threads;
+    options.tile_size = s.tile_size;
+    options.cancel = &job->cancel;
+    options.on_tile = [&](const Tile& t) {
+        // Runs on the render thread that wrote the tile, so reading `work` here is race-free.
+        std::lock_guard lock(mutex_);
+        if (!is_current()) return;
+        const std::size_t row_bytes = std::size_t(t.x1 - t.x0) * 3;
+        for (int y = t.y0; y < t.y1; ++y) {
+            const std::size_t at = (std::size_t(y) * s.width + t.x0) * 3;
+            std::memcpy(&image_.rgb[at], &work.rgb[at], row_bytes);
+        }
+        ++status_.tiles_done;
+        ++image_version_;
+    };
+    RenderStats stats = render(*scene, options, work);
+
+    std::lock_guard lock(mutex_);
+    if (is_current()) {
+        status_.state = stats.cancelled ? RenderState::Stopped : RenderState::Finished;
+        status_.elapsed_seconds = seconds_since(started_);
+    }
+    finish();
+}
+
+RenderStatus RenderController::status() const {
+    std::lock_guard lock(mutex_);
+    RenderStatus s = status_;
+    if (is_busy(s.state)) s.elapsed_seconds = seconds_since(started_);
+    return s;
+}
+
+bool RenderController::copy_image_if_changed(Image& out, std::uint64_t& version) const {
+    std::lock_guard lock(mutex_);
+    if (version == image_version_) return false;
+    out = image_;
+    version = image_version_;
+    return true;
+}
+
+Image RenderController::image() const {
+    std::lock_guard lock(mutex_);
+    return image_;
+}
+
+bool RenderController::wait(std::chrono::milliseconds timeout) const {
+    std::unique_lock lock(mutex_);
+    return changed_.wait_for(lock, timeout, [&] { return !is_busy(status_.state); });
+}
+
+int RenderController::reap() {
+    std::vector<std::shared_ptr<Job>> done;
+    int running = 0;
+    {
+        std::lock_guard lock(mutex_);
+        auto it = std::partition(jobs_.begin(), jobs_.end(), [](const auto& j) { return !j->finished.load(); });
+        done.assign(std::make_move_iterator(it), std::make_move_iterator(jobs_.end()));
+        jobs_.erase(it, jobs_.end());
+        running = int(jobs_.size());
+    }
+    for (auto& j : done)
+        if (j->thread.joinable()) j->thread.join();  // it has finished: returns at once
+    return running;
+}
+
+bool RenderController::wait_all_threads(std::chrono::milliseconds timeout) {
+    const auto deadline = Clock::now() + timeout;
+    while (reap() > 0) {
+        if (Clock::now() >= deadline) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return true;
+}
+
+}  // namespace whitted::viewer

@@ -1,0 +1,120 @@
+#pragma once
+// The viewer's render controller: loads a scene and renders it on background threads, and lets the
+// UI thread look at progress and the image so far without ever blocking on the render.
+// Display-free (no FLTK): the viewer polls it from a timer; the tests drive it directly.
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "film/image.h"
+#include "integrator/render_mode.h"
+#include "render/load_scene.h"
+
+namespace whitted::viewer {
+
+enum class RenderState {
+    Idle,             // nothing started yet
+    Loading,          // parsing, flattening, textures, BVH
+    Rendering,        // tiles are being rendered; the image fills in
+    Finished,         // the whole image is there
+    Stopped,          // stop() was called; the image keeps the tiles finished before it
+    Failed,           // the scene has errors (see RenderStatus::diagnostics)
+    MissingTextures,  // the load failed only because textures were not found (RenderStatus::missing_textures)
+};
+
+const char* state_name(RenderState state);
+// True while a job is loading or rendering.
+inline bool is_busy(RenderState s) { return s == RenderState::Loading || s == RenderState::Rendering; }
+
+struct RenderSettings {
+    int width = 640, height = 480;
+    int max_depth = 5;
+    RenderMode mode = RenderMode::Whitted;
+    int threads = 0;  // 0 = all hardware threads
+    int tile_size = 32;
+};
+
+struct RenderStatus {
+    RenderState state = RenderState::Idle;
+    std::uint64_t job = 0;        // increases with every start()
+    std::string scene_path;       // as given to start()
+    RenderSettings settings;      // of the current job
+    int tiles_done = 0, tiles_total = 0;
+    double elapsed_seconds = 0;   // since start(), frozen when the job ends
+    std::vector<Diagnostic> diagnostics;       // of the last load (warnings too)
+    std::vector<MissingTexture> missing_textures;
+    LoadStats load_stats;         // objects and lights are known once the load succeeded
+    bool scene_reused = false;    // the loaded scene of the previous job was used again (file unchanged)
+    std::string message;          // the last error or warning, one line, for a status bar ("" if none)
+};
+
+class RenderController {
+public:
+    RenderController() = default;
+    ~RenderController();  // cancels any job and joins every thread
+    RenderController(const RenderController&) = delete;
+    RenderController& operator=(const RenderController&) = delete;
+
+    // Loads `scene_path` with `load` and renders it with `settings`, on a background thread.
+    // Returns at once; a job still running is cancelled first (without waiting for it).
+    // If the file, its modification time and the load options are those of the last successful
+    // load, that scene is rendered again without loading (pass force_reload to load anyway).
+    void start(const std::string& scene_path, const LoadOptions& load, const RenderSettings& settings,
+               bool force_reload = false);
+    // Renders a scene that is already loaded (no file involved).
+    void start(std::shared_ptr<const Scene> scene, const RenderSettings& settings);
+
+    // Asks the current job to stop and returns at once. The state becomes Stopped immediately;
+    // the image keeps the tiles finished so far. The job's threads end within a tile row.
+    void stop();
+
+    RenderStatus status() const;
+
+    // Copies the image if it changed since `version` (0 = never seen); returns whether it did.
+    bool copy_image_if_changed(Image& out, std::uint64_t& version) const;
+    Image image() const;
+
+    // Blocks until the current job is no longer loading or rendering, or the timeout passes.
+    // For tests and batch use; the UI never calls it. Returns true if the job ended.
+    bool wait(std::chrono::milliseconds timeout) const;
+    // Joins threads of jobs that have ended (cheap; called by start/stop and the UI timer).
+    // Returns the number of job threads that are still running.
+    int reap();
+    // Waits (up to the timeout) until no job thread runs at all, including cancelled ones.
+    bool wait_all_threads(std::chrono::milliseconds timeout);
+
+private:
+    struct Job;
+    void launch(std::shared_ptr<Job> job);
+    void run(std::shared_ptr<Job> job);
+    void cancel_current_locked();
+    void begin_locked(std::shared_ptr<Job> job, const std::string& path, const RenderSettings& settings);
+
+    mutable std::mutex mutex_;
+    mutable std::condition_variable changed_;
+    std::shared_ptr<Job> current_;
+    std::vector<std::shared_ptr<Job>> jobs_;  // every job whose thread has not been joined yet
+    RenderStatus status_;
+    std::chrono::steady_clock::time_point started_{};
+    Image image_;
+    std::uint64_t image_version_ = 0;
+    std::uint64_t next_job_ = 0;
+
+    // The last scene loaded successfully, reused while its file and options are unchanged.
+    struct Cached {
+        std::string path, key;
+        LoadResult result;
+    };
+    Cached cache_;
+};
+
+// A key describing a file's identity and modification time, "" if it cannot be read.
+std::string file_stamp(const std::string& path);
+
+}  // namespace whitted::viewer

@@ -1,0 +1,530 @@
+#include "viewer_window.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <FL/Fl.H>
+#include <FL/Fl_Box.H>
+#include <FL/Fl_Browser.H>
+#include <FL/Fl_Button.H>
+#include <FL/Fl_Check_Button.H>
+#include <FL/Fl_Choice.H>
+#include <FL/Fl_Menu_Bar.H>
+#include <FL/Fl_Native_File_Chooser.H>
+#include <FL/Fl_Scroll.H>
+#include <FL/Fl_Spinner.H>
+#include <FL/fl_ask.H>
+#include <FL/fl_draw.H>
+#include <FL/x.H>
+
+#include "film/image_io.h"
+
+namespace whitted::viewer {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::atomic<bool> g_quit_requested{false};
+
+constexpr int kMenuH = 25, kToolH = 34, kStatusH = 24, kMessagesH = 110;
+constexpr const char* kModes[] = {"whitted", "raycast", "normals", "depth"};
+
+std::string base_name(const std::string& path) { return fs::path(path).filename().string(); }
+
+// A diagnostic's text may run over several lines (e.g. the paths a texture was looked for at).
+std::vector<std::string> split_lines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    for (std::size_t nl; (nl = text.find('\n', start)) != std::string::npos; start = nl + 1)
+        lines.push_back(text.substr(start, nl - start));
+    lines.push_back(text.substr(start));
+    return lines;
+}
+
+}  // namespace
+
+void request_quit_from_signal() { g_quit_requested = true; }
+
+// Shows the image (row 0 at the top) centred in its area, or a message when there is none.
+class ImageView : public Fl_Widget {
+public:
+    ImageView(int x, int y, int w, int h) : Fl_Widget(x, y, w, h) { box(FL_FLAT_BOX); color(fl_rgb_color(48, 48, 48)); }
+
+    Image image;
+    std::vector<std::string> overlay;  // lines drawn over a blank area instead of the image
+
+    // Top-left corner of the image, in window coordinates.
+    int image_x() const { return x() + std::max(0, (w() - image.width) / 2); }
+    int image_y() const { return y() + std::max(0, (h() - image.height) / 2); }
+
+    void draw() override {
+        fl_push_clip(x(), y(), w(), h());
+        fl_color(color());
+        fl_rectf(x(), y(), w(), h());
+        if (overlay.empty() && image.width > 0 && image.height > 0) {
+            fl_draw_image(image.rgb.data(), image_x(), image_y(), image.width, image.height, 3, 0);
+        } else if (!overlay.empty()) {
+            fl_font(FL_HELVETICA, 14);
+            int line = fl_height() + 4, top = y() + 24;
+            for (std::size_t i = 0; i < overlay.size(); ++i) {
+                fl_color(i == 0 ? FL_WHITE : fl_rgb_color(255, 140, 120));
+                fl_draw(overlay[i].c_str(), x() + 20, top + int(i) * line);
+            }
+        }
+        fl_pop_clip();
+    }
+};
+
+// ---------------------------------------------------------------------------------------------
+
+ViewerWindow::ViewerWindow(const ViewerOptions& options)
+    : Fl_Double_Window(options.window_width, options.window_height, "whitted-view"), options_(options) {
+    const int W = w();
+    menu_ = new Fl_Menu_Bar(0, 0, W, kMenuH);
+    menu_->add("&File/&Open...", FL_CTRL + 'o', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->choose_and_open(); }, this);
+    menu_->add("&File/&Reload", FL_CTRL + 'r', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->render(true); }, this);
+    menu_->add("&File/Reload on &change", 0, [](Fl_Widget* m, void* v) {
+        auto* self = static_cast<ViewerWindow*>(v);
+        const Fl_Menu_Item* item = static_cast<Fl_Menu_Bar*>(m)->mvalue();
+        self->options_.watch = item && item->value();
+        self->watched_stamp_ = file_stamp(self->scene_);
+    }, this, FL_MENU_TOGGLE | (options.watch ? FL_MENU_VALUE : 0));
+    menu_->add("&File/&Save image as...", FL_CTRL + 's', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->save_image_as(); }, this, FL_MENU_DIVIDER);
+    menu_->add("&File/&Quit", FL_CTRL + 'q', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->quit(); }, this);
+    menu_->add("&Render/&Render", FL_F + 5, [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->render(); }, this);
+    menu_->add("&Render/&Stop", FL_Escape, [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->stop(); }, this);
+
+    // Tool bar: the render controls. Changing one and pressing Render uses it.
+    int x = 6, y = kMenuH + 5, h = 24;
+    render_button_ = new Fl_Button(x, y, 70, h, "Render");
+    render_button_->callback([](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->render(); }, this);
+    render_button_->tooltip("Render with these settings (F5)");
+    x += 74;
+    stop_button_ = new Fl_Button(x, y, 56, h, "Stop");
+    stop_button_->callback([](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->stop(); }, this);
+    stop_button_->tooltip("Stop rendering, keeping what is done (Esc)");
+    x += 56 + 48;
+    auto spinner = [&](const char* label, int lw, int sw, int lo, int hi, int value, const char* tip) {
+        auto* s = new Fl_Spinner(x + lw, y, sw, h, label);
+        s->type(FL_INT_INPUT);
+        s->range(lo, hi);
+        s->step(1);
+        s->value(value);
+        s->tooltip(tip);
+        x += lw + sw + 10;
+        return s;
+    };
+    width_ = spinner("Width", 0, 70, 1, 32768, options.settings.width, "Image width in pixels");
+    height_ = spinner("Height", 46, 70, 1, 32768, options.settings.height, "Image height in pixels");
+    fit_ = new Fl_Check_Button(x, y, 100, h, "Fit window");
+    fit_->value(options.fit_window);
+    fit_->tooltip("Render at the size of the image area");
+    fit_->callback([](Fl_Widget* w, void* v) {
+        auto* self = static_cast<ViewerWindow*>(v);
+        bool on = static_cast<Fl_Check_Button*>(w)->value();
+        if (on) self->width_->deactivate(), self->height_->deactivate();
+        else self->width_->activate(), self->height_->activate();
+    }, this);
+    fit_->do_callback();
+    x += 108;
+    depth_ = spinner("Depth", 44, 52, 0, 1000, options.settings.max_depth,
+                     "Recursion limit for reflection and refraction (the camera ray is depth 0)");
+    mode_ = new Fl_Choice(x + 40, y, 90, h, "Mode");
+    for (const char* m : kModes) mode_->add(m);
+    mode_->value(int(options.settings.mode));
+    mode_->tooltip("whitted: full lighting; raycast: unlit colour; normals, depth: debugging views");
+    x += 40 + 90 + 10;
+    const int hw = int(std::max(1u, std::thread::hardware_concurrency()));
+    threads_ = spinner("Threads", 56, 52, 1, 1024, options.settings.threads > 0 ? options.settings.threads : hw,
+                       "Worker threads");
+
+    scroll_ = new Fl_Scroll(0, kMenuH + kToolH, W, 100);
+    scroll_->box(FL_FLAT_BOX);
+    scroll_->color(fl_rgb_color(48, 48, 48));
+    view_ = new ImageView(0, kMenuH + kToolH, W, 100);
+    scroll_->end();
+
+    messages_ = new Fl_Browser(0, 0, W, kMessagesH);
+    messages_->textfont(FL_COURIER);
+    messages_->textsize(13);
+
+    scene_box_ = new Fl_Box(0, 0, 10, kStatusH);
+    progress_box_ = new Fl_Box(0, 0, 10, kStatusH);
+    message_box_ = new Fl_Box(0, 0, 10, kStatusH);
+    for (Fl_Box* b : {scene_box_, progress_box_, message_box_}) {
+        b->box(FL_THIN_DOWN_BOX);
+        b->align(FL_ALIGN_LEFT | FL_ALIGN_INSIDE | FL_ALIGN_CLIP);
+        b->labelsize(13);
+    }
+    end();
+    resizable(this);  // our resize() lays the children out itself
+    size_range(520, 300);
+    callback([](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->quit(); }, this);
+    layout();
+    scene_box_->copy_label(" no scene: File > Open");
+
+    Fl::add_timeout(0.1, poll_cb, this);
+    Fl::add_timeout(1.0, watch_cb, this);
+    if (!options.scene.empty()) open_scene(options.scene);
+}
+
+ViewerWindow::~ViewerWindow() {
+    Fl::remove_timeout(poll_cb, this);
+    Fl::remove_timeout(watch_cb, this);
+    Fl::remove_timeout(done_cb, this);
+    controller_.stop();
+}
+
+void ViewerWindow::resize(int X, int Y, int W, int H) {
+    Fl_Double_Window::resize(X, Y, W, H);
+    layout();  // places the children exactly (Fl_Group only scales them)
+}
+
+void ViewerWindow::layout() {
+    const int W = w(), H = h();
+    menu_->resize(0, 0, W, kMenuH);
+    const int msg_h = show_messages_ ? kMessagesH : 0;
+    const int top = kMenuH + kToolH, bottom = H - kStatusH - msg_h;
+    scroll_->resize(0, top, W, std::max(10, bottom - top));
+    if (show_messages_) {
+        messages_->resize(0, bottom, W, msg_h);
+        messages_->show();
+    } else {
+        messages_->hide();
+    }
+    const int sw = std::min(260, W / 4), pw = std::min(340, W / 3);
+    scene_box_->resize(0, H - kStatusH, sw, kStatusH);
+    progress_box_->resize(sw, H - kStatusH, pw, kStatusH);
+    message_box_->resize(sw + pw, H - kStatusH, W - sw - pw, kStatusH);
+    // The image widget is as big as the image, or as the visible area if that is bigger.
+    const int vw = std::max(scroll_->w(), view_->image.width), vh = std::max(scroll_->h(), view_->image.height);
+    view_->resize(scroll_->x() - scroll_->xposition(), scroll_->y() - scroll_->yposition(), vw, vh);
+    scroll_->init_sizes();
+    scroll_->redraw();
+    redraw();
+}
+
+// ---------------------------------------------------------------------------------------------
+
+LoadOptions ViewerWindow::load_options() const {
+    LoadOptions o;
+    o.lenient = options_.lenient;
+    o.textures.search_dirs = options_.texture_dirs;
+    o.textures.overrides = texture_overrides_;
+    o.textures.missing = options_.checker_textures || checker_scenes_.count(scene_) ? MissingTexturePolicy::Checker
+                                                                                    : MissingTexturePolicy::Error;
+    return o;
+}
+
+void ViewerWindow::read_controls(RenderSettings& s, bool& fit) {
+    fit = fit_->value();
+    if (fit) {
+        s.width = std::max(1, scroll_->w());
+        s.height = std::max(1, scroll_->h());
+        width_->value(s.width);
+        height_->value(s.height);
+    } else {
+        s.width = int(width_->value());
+        s.height = int(height_->value());
+    }
+    s.max_depth = int(depth_->value());
+    s.mode = RenderMode(std::max(0, mode_->value()));
+    s.threads = int(threads_->value());
+}
+
+void ViewerWindow::open_scene(const std::string& path) {
+    scene_ = path;
+    std::string title = "whitted-view: " + base_name(path);
+    copy_label(title.c_str());
+    render(true);
+}
+
+void ViewerWindow::render(bool force_reload) {
+    if (scene_.empty()) {
+        set_message("open a scene first (File > Open)");
+        return;
+    }
+    RenderSettings s = options_.settings;
+    bool fit = false;
+    read_controls(s, fit);
+    extra_message_.clear();
+    watched_stamp_ = file_stamp(scene_);
+    controller_.start(scene_, load_options(), s, force_reload);
+    if (first_job_ == 0) first_job_ = controller_.status().job;
+}
+
+void ViewerWindow::stop() { controller_.stop(); }
+
+void ViewerWindow::quit() {
+    quitting_ = true;
+    controller_.stop();
+    Fl::remove_timeout(poll_cb, this);
+    Fl::remove_timeout(watch_cb, this);
+    // Every window, dialogs included: a dialog's own event loop ends when its window is hidden.
+    while (Fl_Window* w = Fl::first_window()) w->hide();
+    // Fl::wait() runs timers before it sleeps: with none left it would sleep until the next X
+    // event, keeping a dialog's loop (and so the program) alive. A last one wakes it up.
+    Fl::add_timeout(0.02, [](void*) {}, nullptr);
+}
+
+void ViewerWindow::set_message(const std::string& text) {
+    extra_message_ = text;
+    message_box_->copy_label((" " + text).c_str());
+}
+
+// ---------------------------------------------------------------------------------------------
+
+void ViewerWindow::poll_cb(void* self) { static_cast<ViewerWindow*>(self)->poll(); }
+void ViewerWindow::watch_cb(void* self) { static_cast<ViewerWindow*>(self)->watch(); }
+void ViewerWindow::done_cb(void* self) { static_cast<ViewerWindow*>(self)->when_done(); }
+
+void ViewerWindow::poll() {
+    if (g_quit_requested) {
+        quit();
+        return;
+    }
+    controller_.reap();
+    const RenderStatus st = controller_.status();
+
+    const bool failed = st.state == RenderState::Failed || st.state == RenderState::MissingTextures;
+    if (controller_.copy_image_if_changed(view_->image, image_version_)) {
+        layout();
+        view_->redraw();
+    }
+    std::vector<std::string> overlay;
+    if (failed) {
+        overlay.push_back(st.state == RenderState::Failed ? "The scene could not be loaded:"
+                                                          : "Textures were not found:");
+        for (const auto& d : st.diagnostics)
+            if (d.severity == Severity::Error)
+                for (const std::string& line : split_lines(d.str()))
+                    if (overlay.size() < 16) overlay.push_back(line);
+    }
+    if (overlay != view_->overlay) {
+        view_->overlay = overlay;
+        view_->redraw();
+    }
+    if (is_busy(st.state)) stop_button_->activate();
+    else stop_button_->deactivate();
+
+    update_status(st);
+    show_diagnostics(st);
+
+    // The first render has ended: the hooks for tests and scripts, once it is on screen.
+    // (Automated runs never open dialogs: a missing texture ends them like a scene error.)
+    const bool automated = !options_.screenshot.empty() || options_.exit_when_done;
+    const bool will_ask = st.state == RenderState::MissingTextures && !automated && st.job != asked_textures_job_;
+    if (!done_handled_ && first_job_ != 0 && st.job >= first_job_ && !is_busy(st.state) &&
+        st.state != RenderState::Idle && !will_ask) {
+        if (automated || !options_.ready_file.empty()) {
+            done_handled_ = true;
+            Fl::add_timeout(0.3, done_cb, this);
+        }
+    }
+
+    Fl::repeat_timeout(0.1, poll_cb, this);
+
+    // Last, as it opens modal dialogs (which run their own event loop).
+    if (will_ask) {
+        asked_textures_job_ = st.job;
+        ask_for_textures(st);
+    }
+}
+
+void ViewerWindow::update_status(const RenderStatus& st) {
+    std::string scene(" ");
+    scene += scene_.empty() ? std::string("no scene: File > Open") : base_name(scene_);
+    if (st.load_stats.objects || st.load_stats.lights || st.state == RenderState::Rendering ||
+        st.state == RenderState::Finished)
+        scene += ": " + std::to_string(st.load_stats.objects) + " objects, " + std::to_string(st.load_stats.lights) +
+                 (st.load_stats.lights == 1 ? " light" : " lights");
+    if (scene != (scene_box_->label() ? scene_box_->label() : "")) scene_box_->copy_label(scene.c_str());
+
+    char buf[200];
+    const int pct = st.tiles_total ? int(100.0 * st.tiles_done / st.tiles_total) : 0;
+    switch (st.state) {
+        case RenderState::Idle: std::snprintf(buf, sizeof buf, " ready"); break;
+        case RenderState::Loading: std::snprintf(buf, sizeof buf, " loading... %.1f s", st.elapsed_seconds); break;
+        case RenderState::Rendering:
+            std::snprintf(buf, sizeof buf, " rendering %d×%d: %d%% (%d/%d tiles), %.1f s", st.settings.width,
+                          st.settings.height, pct, st.tiles_done, st.tiles_total, st.elapsed_seconds);
+            break;
+        case RenderState::Finished:
+            std::snprintf(buf, sizeof buf, " done %d×%d in %.2f s", st.settings.width, st.settings.height,
+                          st.elapsed_seconds);
+            break;
+        case RenderState::Stopped:
+            std::snprintf(buf, sizeof buf, " stopped at %d%% (%d/%d tiles), %.1f s", pct, st.tiles_done,
+                          st.tiles_total, st.elapsed_seconds);
+            break;
+        case RenderState::Failed: std::snprintf(buf, sizeof buf, " the scene has errors"); break;
+        case RenderState::MissingTextures: std::snprintf(buf, sizeof buf, " textures not found"); break;
+    }
+    if (std::string(buf) != (progress_box_->label() ? progress_box_->label() : ""))
+        progress_box_->copy_label(buf);
+
+    std::string msg = split_lines(extra_message_.empty() ? st.message : extra_message_).front();
+    Fl_Color c = FL_FOREGROUND_COLOR;
+    if (msg.find("error:") != std::string::npos) c = FL_RED;
+    else if (msg.find("warning:") != std::string::npos) c = FL_DARK_YELLOW;
+    msg.insert(0, 1, ' ');
+    if (msg != (message_box_->label() ? message_box_->label() : "") || c != message_box_->labelcolor()) {
+        message_box_->copy_label(msg.c_str());
+        message_box_->labelcolor(c);
+        message_box_->redraw();
+    }
+}
+
+void ViewerWindow::show_diagnostics(const RenderStatus& st) {
+    // Keep the previous messages while a new load runs, until it has its own.
+    if (st.state == RenderState::Loading || st.job == shown_diagnostics_job_) return;
+    shown_diagnostics_job_ = st.job;
+    messages_->clear();
+    for (const auto& d : st.diagnostics) {
+        // "@C<n>@." colours the line and makes the rest literal text.
+        Fl_Color c = d.severity == Severity::Error ? FL_RED : FL_DARK_YELLOW;
+        for (const std::string& line : split_lines(d.str()))
+            messages_->add(("@C" + std::to_string(int(c)) + "@." + line).c_str());
+    }
+    const bool want = !st.diagnostics.empty();
+    if (want != show_messages_) {
+        show_messages_ = want;
+        layout();
+    }
+}
+
+void ViewerWindow::ask_for_textures(const RenderStatus& st) {
+    bool declined = false;
+    for (const MissingTexture& mt : st.missing_textures) {
+        std::string where = base_name(mt.loc.file.empty() ? scene_ : mt.loc.file) + " line " + std::to_string(mt.loc.line);
+        std::string tried;
+        for (std::size_t i = 0; i < mt.tried.size() && i < 4; ++i) tried += "\n    " + mt.tried[i];
+        int answer = fl_choice("The texture \"%s\" (%s) could not be loaded: %s.\nLooked at:%s\n\n"
+                               "Choose the image file to use for it?",
+                               "Cancel (checkerboard)", "Choose file...", nullptr, mt.name.c_str(), where.c_str(),
+                               mt.reason.c_str(), tried.c_str());
+        if (quitting_) return;
+        std::string picked;
+        if (answer == 1) {
+            Fl_Native_File_Chooser chooser;
+            chooser.title(("Texture \"" + mt.name + "\"").c_str());
+            chooser.type(Fl_Native_File_Chooser::BROWSE_FILE);
+            chooser.filter("Images\t*.{bmp,png,jpg,jpeg,ppm,pgm,tga,gif,psd,hdr,pic}\nAll files\t*");
+            chooser.directory(fs::path(scene_).parent_path().string().c_str());
+            if (chooser.show() == 0 && chooser.filename()) picked = chooser.filename();
+        }
+        if (quitting_) return;
+        if (picked.empty()) declined = true;
+        else texture_overrides_[mt.name] = picked;
+    }
+    if (declined) {
+        checker_scenes_.insert(scene_);
+        extra_message_ = "";
+    }
+    render(true);
+    if (declined) set_message("warning: missing textures are drawn as a checkerboard");
+}
+
+void ViewerWindow::watch() {
+    if (options_.watch && !scene_.empty()) {
+        std::string stamp = file_stamp(scene_);
+        if (!stamp.empty() && stamp != watched_stamp_) {
+            watched_stamp_ = stamp;
+            render(true);
+        }
+    }
+    Fl::repeat_timeout(1.0, watch_cb, this);
+}
+
+// ---------------------------------------------------------------------------------------------
+
+void ViewerWindow::choose_and_open() {
+    Fl_Native_File_Chooser chooser;
+    chooser.title("Open scene");
+    chooser.type(Fl_Native_File_Chooser::BROWSE_FILE);
+    chooser.filter("Scenes\t*.sc\nAll files\t*");
+    if (!scene_.empty()) chooser.directory(fs::path(scene_).parent_path().string().c_str());
+    if (chooser.show() == 0 && chooser.filename()) open_scene(chooser.filename());
+}
+
+void ViewerWindow::save_image_as() {
+    Image img = controller_.image();
+    if (img.width == 0) {
+        set_message("error: nothing rendered yet");
+        return;
+    }
+    Fl_Native_File_Chooser chooser;
+    chooser.title("Save image as");
+    chooser.type(Fl_Native_File_Chooser::BROWSE_SAVE_FILE);
+    chooser.options(Fl_Native_File_Chooser::SAVEAS_CONFIRM | Fl_Native_File_Chooser::NEW_FOLDER);
+    chooser.filter("PNG\t*.png\nBMP\t*.bmp\nPPM\t*.ppm\nJPEG\t*.{jpg,jpeg}");
+    std::string suggested = scene_.empty() ? "image.png" : fs::path(scene_).stem().string() + ".png";
+    chooser.preset_file(suggested.c_str());
+    if (chooser.show() != 0 || !chooser.filename()) return;
+    std::string path = chooser.filename();
+    if (fs::path(path).extension().empty()) {
+        static const char* exts[] = {".png", ".bmp", ".ppm", ".jpg"};
+        int f = chooser.filter_value();
+        path += exts[f >= 0 && f < 4 ? f : 0];
+    }
+    if (!is_supported_output(path)) {
+        set_message("error: cannot write '" + path + "': use .png, .bmp, .ppm, .jpg or .jpeg");
+        return;
+    }
+    std::string err = write_image(img, path);
+    set_message(err.empty() ? "saved " + path : "error: " + err);
+}
+
+// The first render has ended and has been on screen for a moment: screenshot, ready file, exit.
+void ViewerWindow::when_done() {
+    Fl::flush();
+    XSync(fl_display, False);
+    const RenderStatus st = controller_.status();
+    if ((st.state == RenderState::Failed || st.state == RenderState::MissingTextures) && options_.exit_when_done) {
+        exit_code_ = 2;
+        for (const auto& d : st.diagnostics) std::fprintf(stderr, "%s\n", d.str().c_str());
+    }
+
+    const int ix = view_->image_x(), iy = view_->image_y();
+    // The visible part of the image (window coordinates).
+    const int vx0 = std::max(ix, scroll_->x()), vy0 = std::max(iy, scroll_->y());
+    const int vx1 = std::min(ix + view_->image.width, scroll_->x() + scroll_->w());
+    const int vy1 = std::min(iy + view_->image.height, scroll_->y() + scroll_->h());
+    if (!options_.screenshot.empty()) {
+        std::string err;
+        if (vx1 <= vx0 || vy1 <= vy0 || !view_->overlay.empty()) {
+            err = "no image is shown";
+        } else {
+            make_current();
+            Image shot(vx1 - vx0, vy1 - vy0);
+            if (!fl_read_image(shot.rgb.data(), vx0, vy0, shot.width, shot.height)) err = "fl_read_image failed";
+            else err = write_image(shot, options_.screenshot);
+        }
+        if (!err.empty()) {
+            std::fprintf(stderr, "whitted-view: error: screenshot: %s\n", err.c_str());
+            if (exit_code_ == 0 && options_.exit_when_done) exit_code_ = 3;
+        }
+    }
+    if (!options_.ready_file.empty()) {
+        // Root-window coordinates: where a screen grab finds the window and the image.
+        std::string tmp = options_.ready_file + ".tmp";
+        {
+            std::ofstream out(tmp);
+            out << "state " << state_name(st.state) << "\n"
+                << "window " << x() << " " << y() << " " << w() << " " << h() << "\n"
+                << "image " << x() + vx0 << " " << y() + vy0 << " " << std::max(0, vx1 - vx0) << " "
+                << std::max(0, vy1 - vy0) << "\n";
+        }
+        std::error_code ec;
+        fs::rename(tmp, options_.ready_file, ec);
+    }
+    if (options_.exit_when_done) quit();
+}
+
+}  // namespace whitted::viewer

@@ -1,0 +1,104 @@
+#pragma once
+// The viewer's main window (FLTK 1.3). Everything here runs on the UI thread; rendering happens in
+// the RenderController's threads, which this window polls ten times a second.
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <FL/Fl_Double_Window.H>
+
+#include "render_controller.h"
+
+class Fl_Menu_Bar;
+class Fl_Button;
+class Fl_Spinner;
+class Fl_Check_Button;
+class Fl_Choice;
+class Fl_Browser;
+class Fl_Box;
+class Fl_Scroll;
+
+namespace whitted::viewer {
+
+class ImageView;
+
+struct ViewerOptions {
+    std::string scene;                       // "" = start empty
+    RenderSettings settings;
+    bool fit_window = false;                 // image size follows the image area
+    bool watch = false;                      // reload when the scene file changes on disk
+    bool lenient = false;
+    bool checker_textures = false;           // never ask: draw missing textures as a checkerboard
+    std::vector<std::string> texture_dirs;
+    int window_width = 1000, window_height = 760;
+    // For tests and scripts: after the first render ends (finished, failed or stopped) and is drawn,
+    std::string screenshot;                  // save the image area's displayed pixels (fl_read_image) here,
+    std::string ready_file;                  // write "state, window and image geometry" here,
+    bool exit_when_done = false;             // and exit (0 finished, 2 scene error, 3 I/O error).
+};
+
+class ViewerWindow : public Fl_Double_Window {
+public:
+    explicit ViewerWindow(const ViewerOptions& options);
+    ~ViewerWindow() override;
+
+    void open_scene(const std::string& path);  // and render it
+    void render(bool force_reload = false);
+    void stop();
+    void quit();
+    int exit_code() const { return exit_code_; }
+    bool quitting() const { return quitting_; }
+
+    void resize(int x, int y, int w, int h) override;
+
+private:
+    static void poll_cb(void* self);
+    static void watch_cb(void* self);
+    static void done_cb(void* self);
+    void poll();
+    void watch();
+    void when_done();
+    void layout();
+    void read_controls(RenderSettings& settings, bool& fit);
+    void update_status(const RenderStatus& st);
+    void show_diagnostics(const RenderStatus& st);
+    void ask_for_textures(const RenderStatus& st);
+    void choose_and_open();
+    void save_image_as();
+    LoadOptions load_options() const;
+    void set_message(const std::string& text);
+
+    ViewerOptions options_;
+    RenderController controller_;
+
+    Fl_Menu_Bar* menu_ = nullptr;
+    Fl_Button *render_button_ = nullptr, *stop_button_ = nullptr;
+    Fl_Spinner *width_ = nullptr, *height_ = nullptr, *depth_ = nullptr, *threads_ = nullptr;
+    Fl_Check_Button* fit_ = nullptr;
+    Fl_Choice* mode_ = nullptr;
+    Fl_Scroll* scroll_ = nullptr;
+    ImageView* view_ = nullptr;
+    Fl_Browser* messages_ = nullptr;
+    Fl_Box *scene_box_ = nullptr, *progress_box_ = nullptr, *message_box_ = nullptr;
+    bool show_messages_ = false;
+
+    std::string scene_;
+    std::string watched_stamp_;
+    std::uint64_t image_version_ = 0;
+    std::uint64_t shown_diagnostics_job_ = ~0ull, asked_textures_job_ = 0, first_job_ = 0;
+    bool done_handled_ = false;
+    bool quitting_ = false;
+    std::string extra_message_;  // a message of the viewer's own (e.g. a failed save)
+    int exit_code_ = 0;
+
+    // Remembered for the session: texture name as written → file the user picked; scenes for
+    // which the user declined to pick (rendered with the checkerboard from then on).
+    std::map<std::string, std::string> texture_overrides_;
+    std::set<std::string> checker_scenes_;
+};
+
+// Set by SIGINT/SIGTERM; the window quits cleanly at its next poll.
+void request_quit_from_signal();
+
+}  // namespace whitted::viewer

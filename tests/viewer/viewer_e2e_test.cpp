@@ -1,0 +1,284 @@
+// whitted-view end to end: no display, and a real X server (Xvfb) with a real screen grab (xwd)
+// compared with the command-line renderer's image of the same scene and size.
+#ifdef WHITTED_VIEWER_PATH
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "film/image_io.h"
+#include "support/run_process.h"
+
+namespace whitted {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+using test::run_process;
+
+std::string find_on_path(const std::string& name) {
+    const char* path = std::getenv("PATH");
+    std::stringstream dirs(path ? path : "/usr/bin:/bin");
+    for (std::string dir; std::getline(dirs, dir, ':');)
+        if (!dir.empty() && access((dir + "/" + name).c_str(), X_OK) == 0) return dir + "/" + name;
+    return "";
+}
+
+// A child process with its output in a log file; killed (SIGTERM, then SIGKILL) when destroyed.
+struct Child {
+    pid_t pid = -1;
+    std::string log;
+    Child(const std::vector<std::string>& argv, const std::string& log_path,
+          const std::vector<std::pair<std::string, std::string>>& env = {}, int pass_fd = -1)
+        : log(log_path) {
+        pid = fork();
+        if (pid == 0) {
+            int fd = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            if (fd >= 0) {
+                dup2(fd, STDOUT_FILENO);
+                dup2(fd, STDERR_FILENO);
+            }
+            for (const auto& [k, v] : env) setenv(k.c_str(), v.c_str(), 1);
+            std::vector<char*> args;
+            for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+            args.push_back(nullptr);
+            (void)pass_fd;  // inherited as is
+            execv(args[0], args.data());
+            _exit(127);
+        }
+    }
+    // Waits up to `timeout` for the child to exit; returns its exit code, or -1 if it is still running.
+    int wait_exit(std::chrono::milliseconds timeout) {
+        const auto deadline = std::chrono::steady_clock::now() + timeout;
+        while (pid > 0) {
+            int status = 0;
+            pid_t r = waitpid(pid, &status, WNOHANG);
+            if (r == pid) {
+                pid = -1;
+                return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+            }
+            if (std::chrono::steady_clock::now() >= deadline) return -1;
+            std::this_thread::sleep_for(20ms);
+        }
+        return -1;
+    }
+    std::string output() const {
+        std::ifstream in(log);
+        return {std::istreambuf_iterator<char>(in), {}};
+    }
+    ~Child() {
+        if (pid <= 0) return;
+        kill(pid, SIGTERM);
+        if (wait_exit(3s) == -1 && pid > 0) {
+            kill(pid, SIGKILL);
+            waitpid(pid, nullptr, 0);
+        }
+    }
+};
+
+// An X server of our own on a free display number (Xvfb picks it: -displayfd).
+class Xvfb {
+public:
+    bool start(const std::string& dir, std::string& why) {
+        std::string xvfb = find_on_path("Xvfb");
+        if (xvfb.empty()) {
+            why = "Xvfb is not installed (Debian package xvfb; scripts/install-deps.sh --viewer-test installs it)";
+            return false;
+        }
+        int fds[2];
+        if (pipe(fds) != 0) return why = "pipe failed", false;
+        server_ = std::make_unique<Child>(
+            std::vector<std::string>{xvfb, "-displayfd", std::to_string(fds[1]), "-screen", "0", "1280x1024x24",
+                                     "-nolisten", "tcp"},
+            dir + "/xvfb.log", std::vector<std::pair<std::string, std::string>>{}, fds[1]);
+        close(fds[1]);
+        std::string number;
+        char c;
+        // Xvfb writes the display number and a newline once it accepts connections.
+        fcntl(fds[0], F_SETFL, O_NONBLOCK);
+        const auto deadline = std::chrono::steady_clock::now() + 20s;
+        while (std::chrono::steady_clock::now() < deadline) {
+            ssize_t n = read(fds[0], &c, 1);
+            if (n == 1) {
+                if (c == '\n') break;
+                number += c;
+            } else if (n == 0) {
+                break;
+            } else {
+                std::this_thread::sleep_for(10ms);
+            }
+        }
+        close(fds[0]);
+        if (number.empty()) {
+            why = "Xvfb did not start: " + server_->output();
+            return false;
+        }
+        display_ = ":" + number;
+        return true;
+    }
+    const std::string& display() const { return display_; }
+
+private:
+    std::unique_ptr<Child> server_;
+    std::string display_;
+};
+
+const char* kScene = R"(camera [ eye 0 1 6 focus 0 0 0 angle 40 ]
+light [ position 3 4 5 color 1 1 1 ]
+light [ position -4 2 3 color 0.4 0.4 0.6 ]
+background [ color 0.1 0.15 0.3 ]
+mastersubgraph root [
+  trans [ translate -1.2 0 0  object sphere [ diffuse 0.9 0.2 0.1 specular 0.5 0.5 0.5 shine 30 reflect 0.3 0.3 0.3 ] ]
+  trans [ translate 1.2 0 0 rotate 0 1 0 30 object cube [ diffuse 0.2 0.7 0.3 ] ]
+  trans [ translate 0 -1 0 scale 8 0.1 8 object cube [ diffuse 0.6 0.6 0.6 reflect 0.4 0.4 0.4 ] ]
+  trans [ translate 0 1.2 -1 object cone [ diffuse 0.9 0.8 0.2 ] ]
+]
+)";
+
+class ViewerE2E : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = test::make_temp_dir();
+        scene_ = dir_ + "/scene.sc";
+        std::ofstream(scene_) << kScene;
+    }
+    std::string dir_, scene_;
+};
+
+TEST(ViewerNoDisplay, ExitsWithAClearErrorWhenDisplayIsUnset) {
+    auto r = run_process({"/usr/bin/env", "-u", "DISPLAY", WHITTED_VIEWER_PATH, "--width", "10", "--height", "10"});
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("whitted-view: error: no display"), std::string::npos) << r.output;
+}
+
+TEST(ViewerNoDisplay, ExitsWithAClearErrorWhenDisplayIsWrong) {
+    auto r = run_process({"/usr/bin/env", "DISPLAY=:4321", WHITTED_VIEWER_PATH});
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("whitted-view: error: cannot open display ':4321'"), std::string::npos) << r.output;
+}
+
+TEST(ViewerNoDisplay, HelpAndBadUsageNeedNoDisplay) {
+    auto help = run_process({"/usr/bin/env", "-u", "DISPLAY", WHITTED_VIEWER_PATH, "--help"});
+    EXPECT_EQ(help.exit_code, 0);
+    EXPECT_NE(help.output.find("--screenshot"), std::string::npos);
+    EXPECT_EQ(run_process({"/usr/bin/env", "-u", "DISPLAY", WHITTED_VIEWER_PATH, "--mode", "fancy"}).exit_code, 1);
+}
+
+// Where `part` appears in `whole` (every pixel within 1 level), or {-1, -1}.
+std::pair<int, int> find_subimage(const Image& whole, const Image& part, std::pair<int, int> hint) {
+    auto matches_at = [&](int ox, int oy) {
+        for (int y = 0; y < part.height; ++y)
+            for (int x = 0; x < part.width; ++x) {
+                glm::ivec3 a(whole.at(ox + x, oy + y)), b(part.at(x, y));
+                glm::ivec3 d = glm::abs(a - b);
+                if (d.x > 1 || d.y > 1 || d.z > 1) return false;
+            }
+        return true;
+    };
+    if (hint.first >= 0 && hint.first + part.width <= whole.width && hint.second >= 0 &&
+        hint.second + part.height <= whole.height && matches_at(hint.first, hint.second))
+        return hint;
+    for (int oy = 0; oy + part.height <= whole.height; ++oy)
+        for (int ox = 0; ox + part.width <= whole.width; ++ox)
+            if (matches_at(ox, oy)) return {ox, oy};
+    return {-1, -1};
+}
+
+TEST_F(ViewerE2E, TheWindowShowsTheSameImageAsTheCommandLineRenderer) {
+    Xvfb x;
+    std::string why;
+    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
+    const std::string xwd = find_on_path("xwd"), convert = find_on_path("convert");
+    if (xwd.empty() || convert.empty())
+        GTEST_SKIP() << "viewer screen test skipped: needs xwd (x11-apps) and convert (imagemagick)";
+
+    const int W = 320, H = 240;
+    auto cli = run_process({test::cli_path(), scene_, "-o", dir_ + "/cli.png", "--width", std::to_string(W),
+                            "--height", std::to_string(H), "-q"});
+    ASSERT_EQ(cli.exit_code, 0) << cli.output;
+    Image expected;
+    ASSERT_EQ(read_image(dir_ + "/cli.png", expected), "");
+
+    // The viewer renders on start and says when the image is on screen.
+    const std::string ready = dir_ + "/ready.txt";
+    Child viewer({WHITTED_VIEWER_PATH, scene_, "--width", std::to_string(W), "--height", std::to_string(H),
+                  "--threads", "2", "--ready-file", ready},
+                 dir_ + "/viewer.log", {{"DISPLAY", x.display()}});
+    const auto deadline = std::chrono::steady_clock::now() + 120s;
+    while (!fs::exists(ready) && std::chrono::steady_clock::now() < deadline) {
+        ASSERT_EQ(viewer.wait_exit(0ms), -1) << "the viewer exited early:\n" << viewer.output();
+        std::this_thread::sleep_for(50ms);
+    }
+    ASSERT_TRUE(fs::exists(ready)) << "the render did not finish in time:\n" << viewer.output();
+    std::ifstream in(ready);
+    std::string word, state;
+    int wx, wy, ww, wh, ix, iy, iw, ih;
+    in >> word >> state >> word >> wx >> wy >> ww >> wh >> word >> ix >> iy >> iw >> ih;
+    EXPECT_EQ(state, "finished");
+    EXPECT_EQ(iw, W);
+    EXPECT_EQ(ih, H);
+
+    // A real screen grab of the whole X screen.
+    auto grab = run_process({"/bin/sh", "-c",
+                             "'" + xwd + "' -root -silent -display " + x.display() + " | '" + convert + "' xwd:- '" +
+                                 dir_ + "/screen.png'"});
+    ASSERT_EQ(grab.exit_code, 0) << grab.output;
+    Image screen;
+    ASSERT_EQ(read_image(dir_ + "/screen.png", screen), "");
+    ASSERT_EQ(screen.width, 1280);
+
+    auto [fx, fy] = find_subimage(screen, expected, {ix, iy});
+    ASSERT_GE(fx, 0) << "the rendered image was not found on the screen (see " << dir_ << "/screen.png)";
+    EXPECT_EQ(fx, ix) << "the viewer reported the image at another place";
+    EXPECT_EQ(fy, iy);
+    // The image lies inside the window.
+    EXPECT_GE(fx, wx);
+    EXPECT_LE(fx + W, wx + ww);
+
+    // Ctrl-C / SIGTERM closes the window cleanly.
+    kill(viewer.pid, SIGTERM);
+    EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
+}
+
+TEST_F(ViewerE2E, ScreenshotFlagSavesTheDisplayedPixels) {
+    Xvfb x;
+    std::string why;
+    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
+    auto cli = run_process({test::cli_path(), scene_, "-o", dir_ + "/cli.png", "--width", "200", "--height", "150",
+                            "--mode", "normals", "-q"});
+    ASSERT_EQ(cli.exit_code, 0) << cli.output;
+    Child viewer({WHITTED_VIEWER_PATH, scene_, "--width", "200", "--height", "150", "--mode", "normals",
+                  "--screenshot", dir_ + "/shot.png"},
+                 dir_ + "/viewer.log", {{"DISPLAY", x.display()}});
+    ASSERT_EQ(viewer.wait_exit(120s), 0) << viewer.output();
+    Image expected, shot;
+    ASSERT_EQ(read_image(dir_ + "/cli.png", expected), "");
+    ASSERT_EQ(read_image(dir_ + "/shot.png", shot), "");
+    ASSERT_EQ(shot.width, 200);
+    ASSERT_EQ(shot.height, 150);
+    EXPECT_EQ(find_subimage(shot, expected, {0, 0}), std::make_pair(0, 0));
+}
+
+TEST_F(ViewerE2E, ASceneWithErrorsIsReportedNotACrash) {
+    Xvfb x;
+    std::string why;
+    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
+    std::ofstream(scene_) << "camera [ eye 0 0 5 ]\nmastersubgraph root [ trans [ object blob [ ] ] ]\n";
+    Child viewer({WHITTED_VIEWER_PATH, scene_, "--exit-when-done"}, dir_ + "/viewer.log",
+                 {{"DISPLAY", x.display()}});
+    EXPECT_EQ(viewer.wait_exit(60s), 2) << viewer.output();
+    EXPECT_NE(viewer.output().find(scene_ + ":2:"), std::string::npos) << viewer.output();
+}
+
+}  // namespace
+}  // namespace whitted
+#endif
