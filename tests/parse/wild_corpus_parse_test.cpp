@@ -1,0 +1,175 @@
+// Every real scene file of the wild corpus (shared/scenes/wild, see SOURCES.md there) parses or
+// fails exactly as expected. The expectations are written down here file by file, with the
+// reason, so that any change in behaviour shows up as a named regression.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+#include "parse/parser.h"
+#include "wild_corpus.h"
+
+namespace whitted {
+namespace {
+
+struct Expected {
+    int line, col;        // of the first error; line 0 = whole file (empty files only)
+    const char* message;  // substring of the error message
+    const char* why;
+};
+
+const std::string kCitelao = "citelao__cse452-computer-graphics/data/scenes/";
+const std::string kSuziray = "suziray__COURSE-452-computer-graphics/cse452/";
+const std::string kTufts = "spanut01__Graphics/homework/5/data/tests/";
+const std::string kIndex = "_unattributed__search-index/";
+
+// Files that must FAIL in strict mode (all others must load).
+std::map<std::string, Expected> strict_failures() {
+    const Expected empty{0, 0, "empty scene file", "empty in the original repository"};
+    const Expected tufts{9, 3, "unknown keyword 'number' in light block",
+                         "older Brown/Tufts dialect (`light [ number 0`, top-level trans)"};
+    return {
+        {kCitelao + "dukes_adam_park.sc", empty},
+        {kCitelao + "freestone_amy.sc", empty},
+        {kCitelao + "tucek_jim_snowman.sc", empty},
+        {kTufts + "all.sc", tufts},
+        {kTufts + "all_effects.sc", tufts},
+        {kTufts + "all_objects.sc", tufts},
+        {kTufts + "mirror_test.sc", tufts},
+        {kTufts + "shadow_test.sc", tufts},
+        {kIndex + "idx58331149_castle.sc",
+         {127, 4, "unknown keyword 'alpha' in object block", "student extension `alpha 0.9`"}},
+        {kCitelao + "mcgurther_mark_chairs.sc",
+         {114, 8, "unknown keyword 'angularrate' in trans block",
+          "student extensions `angularrate`, `velocity`, `object cow`"}},
+        {kCitelao + "sudarsanam_nisha_undertheshade.sc",
+         {110, 1, "unknown keyword 'shear' in trans block", "student extension `shear`"}},
+        {kSuziray + "cse452shell/war_and_peace.sc",
+         {36, 10, "unknown object type 'ellipsoid'", "student shapes `ellipsoid`, `cactus`"}},
+        {kSuziray + "data/scenes/barnett_david.sc",
+         {117, 10, "unknown object type 'ellipsoid'", "student edit sphere -> ellipsoid"}},
+        {kSuziray + "data/scenes/simple0.sc",
+         {20, 12, "unknown object type 'ellipsoid'", "student shape `ellipsoid`"}},
+    };
+}
+
+// Files that must FAIL even in lenient mode (all others must load).
+std::map<std::string, Expected> lenient_failures() {
+    const Expected empty{0, 0, "empty scene file", "empty in the original repository"};
+    const Expected tufts{20, 1, "'trans' at top level",
+                         "Tufts dialect: scene is top-level trans blocks, no mastersubgraph"};
+    return {
+        {kCitelao + "dukes_adam_park.sc", empty},
+        {kCitelao + "freestone_amy.sc", empty},
+        {kCitelao + "tucek_jim_snowman.sc", empty},
+        {kTufts + "all.sc", tufts},
+        {kTufts + "all_effects.sc", tufts},
+        {kTufts + "all_objects.sc", tufts},
+        {kTufts + "mirror_test.sc", tufts},
+        {kTufts + "shadow_test.sc",
+         {56, 1, "'trans' at top level", "Tufts dialect (8 lights before the first trans)"}},
+        // Lenient mode skips unknown keywords, not malformed numbers: `diffuse 0.6. 0.6 0.7`.
+        {kCitelao + "sudarsanam_nisha_undertheshade.sc",
+         {138, 9, "expected a number for 'diffuse', found '0.6.'", "malformed number `0.6.`"}},
+    };
+}
+
+std::string corpus_name(const std::filesystem::path& file, const std::filesystem::path& dir) {
+    return file.lexically_relative(dir).generic_string();
+}
+
+void check_corpus(bool lenient) {
+    const auto dir = wild_corpus_dir();
+    if (dir.empty()) GTEST_SKIP() << wild_corpus_missing_reason();
+    const auto failures = lenient ? lenient_failures() : strict_failures();
+    const auto files = wild_scene_files(dir);
+    ASSERT_FALSE(files.empty()) << "no .sc files under " << dir;
+
+    ParseOptions options;
+    options.lenient = lenient;
+    std::map<std::string, bool> seen;
+    for (const auto& file : files) {
+        const std::string name = corpus_name(file, dir);
+        const ParseResult r = parse_scene_file(file.string(), options);
+        const auto expected = failures.find(name);
+        if (expected == failures.end()) {
+            EXPECT_TRUE(r.ok()) << name << " should load; first diagnostic: "
+                                << (r.diagnostics.empty() ? "" : r.diagnostics.back().str());
+            if (r.ok()) {
+                EXPECT_GE(r.scene.root, 0) << name;
+            }
+            continue;
+        }
+        seen[name] = true;
+        const Expected& e = expected->second;
+        ASSERT_FALSE(r.ok()) << name << " should fail (" << e.why << ")";
+        const Diagnostic& d = r.diagnostics.back();
+        EXPECT_EQ(d.severity, Severity::Error) << name;
+        EXPECT_EQ(d.loc.file, file.string()) << name;
+        EXPECT_EQ(d.loc.line, e.line) << name << ": " << d.str();
+        EXPECT_EQ(d.loc.col, e.col) << name << ": " << d.str();
+        EXPECT_NE(d.message.find(e.message), std::string::npos)
+            << name << ": expected \"" << e.message << "\" in: " << d.str();
+        if (e.line == 0) {  // only the empty files may fail without a position
+            EXPECT_EQ(std::filesystem::file_size(file), 0u) << name;
+        }
+    }
+    for (const auto& [name, e] : failures)
+        EXPECT_TRUE(seen.count(name)) << "expected-invalid file missing from the corpus: " << name;
+}
+
+TEST(ParseWildCorpus, StrictMode) { check_corpus(false); }
+
+TEST(ParseWildCorpus, LenientModeLoadsTheExtensions) { check_corpus(true); }
+
+TEST(ParseWildCorpus, LenientModeWarnsForWhatItSkips) {
+    const auto dir = wild_corpus_dir();
+    if (dir.empty()) GTEST_SKIP() << wild_corpus_missing_reason();
+    ParseOptions lenient;
+    lenient.lenient = true;
+    const std::pair<std::string, const char*> cases[] = {
+        {kIndex + "idx58331149_castle.sc", "'alpha'"},
+        {kCitelao + "mcgurther_mark_chairs.sc", "'angularrate'"},
+        {kCitelao + "mcgurther_mark_chairs.sc", "'velocity'"},
+        {kCitelao + "mcgurther_mark_chairs.sc", "'cow'"},
+        {kSuziray + "cse452shell/war_and_peace.sc", "'ellipsoid'"},
+        {kSuziray + "cse452shell/war_and_peace.sc", "'cactus'"},
+        {kSuziray + "data/scenes/barnett_david.sc", "'ellipsoid'"},
+        {kSuziray + "data/scenes/simple0.sc", "'ellipsoid'"},
+    };
+    for (const auto& [name, word] : cases) {
+        const ParseResult r = parse_scene_file((dir / name).string(), lenient);
+        ASSERT_TRUE(r.ok()) << name;
+        bool warned = false;
+        for (const auto& d : r.diagnostics)
+            warned = warned || (d.severity == Severity::Warning && d.loc.line > 0 &&
+                                d.message.find(word) != std::string::npos);
+        EXPECT_TRUE(warned) << name << " should warn about " << word;
+    }
+}
+
+TEST(ParseWildCorpus, MissingOpeningBracketsAreFine) {
+    // `object cylinder diffuse 1 1 1 ]` without '[': '[' is optional, so the brackets balance.
+    const auto dir = wild_corpus_dir();
+    if (dir.empty()) GTEST_SKIP() << wild_corpus_missing_reason();
+    const ParseResult r =
+        parse_scene_file((dir / kIndex / "idx22671205228_disk_missing_brackets.sc").string());
+    ASSERT_TRUE(r.ok());
+    const SubgraphDesc& disk = r.scene.subgraphs.at(r.scene.find_subgraph("disk"));
+    ASSERT_EQ(disk.children.size(), 2u);
+    EXPECT_EQ(disk.children[0].objects.at(0).kind, ShapeKind::Cylinder);
+    EXPECT_EQ(r.scene.lights.size(), 3u);
+}
+
+TEST(ParseWildCorpus, TrailingCommasAreWarnings) {
+    const auto dir = wild_corpus_dir();
+    if (dir.empty()) GTEST_SKIP() << wild_corpus_missing_reason();
+    const ParseResult r = parse_scene_file((dir / kCitelao / "foostable.sc").string());
+    ASSERT_TRUE(r.ok());
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(r.diagnostics[0].loc.line, 463);  // `ambient 0.2125, 0.1275, 0.054`
+    EXPECT_NE(r.diagnostics[0].message.find("','"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace whitted
