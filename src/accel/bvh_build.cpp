@@ -5,10 +5,12 @@
 // children), and the instances are reordered to leaf order.
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 
 #include "accel/bvh.h"
 #include "accel/instance_geometry.h"
@@ -24,6 +26,8 @@ constexpr float kTraversalCost = 0.5f;
 // Below this depth SAH splits are replaced by median splits, which bounds the depth (and so
 // the traversal stack, see bvh_traverse.cpp) even for pathological inputs.
 constexpr std::uint32_t kSahDepthLimit = 64;
+// Below this many instances the build stays on one thread.
+constexpr std::uint32_t kParallelBuildMin = 50000;
 
 // Four floats in one SIMD register (GCC/Clang vector extension: SSE on x86, NEON on ARM).
 typedef float V4 __attribute__((vector_size(16)));
@@ -92,15 +96,39 @@ Bounds padded_world_bounds(const Instance& inst) {
     return b;
 }
 
-std::vector<BinNode> build_binary(std::vector<PrimRef>& refs) {
-    const std::uint32_t n = static_cast<std::uint32_t>(refs.size());
-    std::vector<BinNode> nodes;
-    nodes.reserve(2 * std::size_t(n));
-    nodes.emplace_back();
-    std::vector<Task> stack{{0, n, 0, 0, {}, {}, false}};
+int build_threads() { return int(std::min(8u, std::max(1u, std::thread::hardware_concurrency()))); }
+
+// Runs body(begin, end) over [0, n) in chunks, on all build threads when n is large.
+template <class Body>
+void parallel_chunks(std::size_t n, Body body) {
+    const int threads = build_threads();
+    if (threads == 1 || n < kParallelBuildMin) {
+        body(std::uint32_t(0), std::uint32_t(n));
+        return;
+    }
+    constexpr std::size_t kChunk = 16384;
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+        for (std::size_t b; (b = next.fetch_add(kChunk)) < n;) body(std::uint32_t(b), std::uint32_t(std::min(n, b + kChunk)));
+    };
+    std::vector<std::thread> pool;
+    for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+}
+
+// Builds the subtree of `root` (whose node nodes[root.node] exists) into `nodes`. Tasks of at most
+// `defer_below` references are not built but appended to *deferred (when given), for other threads.
+void build_subtree(std::vector<PrimRef>& refs, const Task& root, std::vector<BinNode>& nodes,
+                   std::uint32_t defer_below, std::vector<Task>* deferred) {
+    std::vector<Task> stack{root};
     while (!stack.empty()) {
         const Task task = stack.back();
         stack.pop_back();
+        if (deferred && task.end - task.begin <= defer_below) {
+            deferred->push_back(task);
+            continue;
+        }
 
         // The binning pass of the parent gives the children's bounds; median splits do not.
         Box box = task.box, centres = task.centres;
@@ -193,6 +221,57 @@ std::vector<BinNode> build_binary(std::vector<PrimRef>& refs) {
         stack.push_back({mid, task.end, left + 1, task.depth + 1, child_box[1], child_centres[1], known});
         stack.push_back({task.begin, mid, left, task.depth + 1, child_box[0], child_centres[0], known});
     }
+}
+
+// The binary tree over all refs. The top is built by this thread; the subtrees below it are
+// built in parallel into separate arrays, then appended in a fixed order (so the result does not
+// depend on the thread count or timing).
+std::vector<BinNode> build_binary(std::vector<PrimRef>& refs) {
+    const std::uint32_t n = static_cast<std::uint32_t>(refs.size());
+    std::vector<BinNode> nodes;
+    nodes.reserve(2 * std::size_t(n));
+    nodes.emplace_back();
+    const Task root{0, n, 0, 0, {}, {}, false};
+    const int threads = build_threads();
+    if (threads == 1 || n < kParallelBuildMin) {
+        build_subtree(refs, root, nodes, 0, nullptr);
+        return nodes;
+    }
+    // Subtrees of at most n/16 refs: enough pieces to balance two to eight threads.
+    std::vector<Task> deferred;
+    build_subtree(refs, root, nodes, n / 16, &deferred);
+    std::vector<std::vector<BinNode>> parts(deferred.size());
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+        for (std::size_t i; (i = next.fetch_add(1)) < deferred.size();) {
+            std::vector<BinNode>& part = parts[i];
+            part.reserve(2 * std::size_t(deferred[i].end - deferred[i].begin));
+            part.emplace_back();
+            Task t = deferred[i];
+            t.node = 0;
+            build_subtree(refs, t, part, 0, nullptr);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+    // Part node 0 is the deferred task's own node; part node k > 0 goes to base + k - 1.
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        const std::vector<BinNode>& part = parts[i];
+        const std::uint32_t base = static_cast<std::uint32_t>(nodes.size());
+        auto map = [&](std::uint32_t k) { return k == 0 ? deferred[i].node : base + k - 1; };
+        for (std::size_t k = 0; k < part.size(); ++k) {
+            BinNode node = part[k];
+            if (node.count == 0) {
+                node.first = map(node.first);
+                node.second = map(node.second);
+            }
+            if (k == 0) nodes[deferred[i].node] = node;
+            else nodes.push_back(node);
+        }
+        std::vector<BinNode>().swap(parts[i]);
+    }
     return nodes;
 }
 
@@ -254,12 +333,14 @@ Bvh build_bvh(std::vector<Instance>& instances) {
     if (n >= Bvh4Node::kMaxInstances) throw std::length_error("too many instances for the BVH");
 
     std::vector<PrimRef> refs(n);
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const Bounds b = padded_world_bounds(instances[i]);
-        float index;
-        std::memcpy(&index, &i, 4);
-        refs[i] = {V4{b.lo.x, b.lo.y, b.lo.z, index}, V4{b.hi.x, b.hi.y, b.hi.z, 0.0f}};
-    }
+    parallel_chunks(n, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t i = begin; i < end; ++i) {
+            const Bounds b = padded_world_bounds(instances[i]);
+            float index;
+            std::memcpy(&index, &i, 4);
+            refs[i] = {V4{b.lo.x, b.lo.y, b.lo.z, index}, V4{b.hi.x, b.hi.y, b.hi.z, 0.0f}};
+        }
+    });
     {
         const std::vector<BinNode> bin = build_binary(refs);
         bvh.box = bin[0].box;
