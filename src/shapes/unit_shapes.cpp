@@ -76,6 +76,17 @@ Bounds unit_shape_world_bounds(ShapeKind kind, const glm::mat4& m) {
         b.grow(centre + half);
         return b;
     }
+    if (kind == ShapeKind::Cone) {
+        // The convex hull of the base disc (centre M·(0,-0.5,0), spanned by the x and z columns)
+        // and the apex M·(0,0.5,0): the disc's box grown by the apex point is exact.
+        const glm::vec3 base(m * glm::vec4(0.0f, -0.5f, 0.0f, 1.0f));
+        glm::vec3 half;
+        for (int i = 0; i < 3; ++i) half[i] = 0.5f * std::sqrt(m[0][i] * m[0][i] + m[2][i] * m[2][i]);
+        b.grow(base - half);
+        b.grow(base + half);
+        b.grow(glm::vec3(m * glm::vec4(0.0f, 0.5f, 0.0f, 1.0f)));
+        return b;
+    }
     for (int c = 0; c < 8; ++c) {
         const glm::vec4 corner((c & 1) ? 0.5f : -0.5f, (c & 2) ? 0.5f : -0.5f,
                                (c & 4) ? 0.5f : -0.5f, 1.0f);
