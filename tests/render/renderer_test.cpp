@@ -1,5 +1,6 @@
 // The image-space driver: pixel-centre rays, thread independence, cancellation.
 #include <atomic>
+#include <chrono>
 
 #include <gtest/gtest.h>
 
@@ -75,6 +76,47 @@ TEST(Renderer, CancelStopsAfterTheCurrentRowsAndLeavesTheRestBlack) {
     // The last tile (bottom right) was never reached: still black.
     for (int y = 224; y < 256; ++y)
         for (int x = 224; x < 256; ++x) ASSERT_EQ(img.at(x, y), glm::u8vec3(0)) << x << "," << y;
+}
+
+TEST(Renderer, CancelReturnsPromptlyFromABigRender) {
+    // Seconds of work if it ran to the end; once the flag is set the workers finish at most the
+    // row they are on, so render() returns within a few rows' time.
+    Scene scene = busy_scene();
+    std::atomic<bool> cancel{false};
+    std::atomic<int> tiles{0};
+    std::chrono::steady_clock::time_point cancelled_at;
+    RenderOptions o;
+    o.width = 4096;
+    o.height = 4096;
+    o.threads = 2;
+    o.cancel = &cancel;
+    o.on_tile = [&](const Tile&) {
+        if (++tiles == 2) {
+            cancelled_at = std::chrono::steady_clock::now();
+            cancel = true;
+        }
+    };
+    Image img(o.width, o.height);
+    RenderStats s = render(scene, o, img);
+    const double after = std::chrono::duration<double>(std::chrono::steady_clock::now() - cancelled_at).count();
+    EXPECT_TRUE(s.cancelled);
+    EXPECT_LT(s.tiles_done, 16);
+    EXPECT_LT(after, 1.0) << "seconds from the cancel to the return";
+    EXPECT_EQ(img.at(4095, 4095), glm::u8vec3(0));
+}
+
+TEST(Renderer, CancelledBeforeTheStartRendersNothing) {
+    Scene scene = busy_scene();
+    std::atomic<bool> cancel{true};
+    RenderOptions o;
+    o.width = 64;
+    o.height = 64;
+    o.cancel = &cancel;
+    Image img(o.width, o.height);
+    RenderStats s = render(scene, o, img);
+    EXPECT_TRUE(s.cancelled);
+    EXPECT_EQ(s.tiles_done, 0);
+    for (auto v : img.rgb) ASSERT_EQ(v, 0);
 }
 
 TEST(Renderer, ToByteRoundsAndClamps) {
