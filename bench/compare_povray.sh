@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Renders each scene with whitted and with POV-Ray 3.7 at the same size, recursion depth and
+# thread count, alternating the two renderers run by run, and prints the median wall time of the
+# whole process (parse + build + render + write) of each and their ratio.
+#
+#   bench/compare_povray.sh [-n RUNS] [-t THREADS] [-W WIDTH] [-H HEIGHT] [-d DEPTH] [-b BUILD_DIR] [SCENE.sc ...]
+#
+# Defaults: 5 runs, all hardware threads, 640×480, depth 5, build/ (needs build/apps/cli/whitted),
+# scenes bench/scenes/small.sc and bench/scenes/grid10k.sc. Every SCENE.sc needs a SCENE.pov next
+# to it. Depth: whitted's --max-depth D traces the camera ray plus D bounces; POV-Ray counts the
+# camera ray as level 1, so it gets max_trace_level D+1 (patched into a temporary copy). No
+# anti-aliasing in either.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+runs=5 threads="$(nproc)" width=640 height=480 depth=5 build="$here/../build"
+while getopts "n:t:W:H:d:b:" opt; do
+  case "$opt" in
+    n) runs="$OPTARG" ;; t) threads="$OPTARG" ;; W) width="$OPTARG" ;; H) height="$OPTARG" ;;
+    d) depth="$OPTARG" ;; b) build="$OPTARG" ;;
+    *) sed -n '2,12p' "$0"; exit 1 ;;
+  esac
+done
+shift $((OPTIND - 1))
+scenes=("$@")
+[ ${#scenes[@]} -gt 0 ] || scenes=("$here/scenes/small.sc" "$here/scenes/grid10k.sc")
+whitted="$build/apps/cli/whitted"
+[ -x "$whitted" ] || { echo "compare_povray: no $whitted (build it, or pass -b BUILD_DIR)" >&2; exit 1; }
+command -v povray >/dev/null || { echo "compare_povray: povray (3.7) is not installed" >&2; exit 1; }
+
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+
+now() { date +%s.%N; }
+median() { sort -g | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
+
+echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) hardware threads; load: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "size ${width}x${height}, depth $depth (POV-Ray max_trace_level $((depth + 1))), $threads threads, no AA, $runs alternating runs each, median wall time of the whole process"
+printf "%-14s %12s %12s %9s\n" scene whitted_s povray_s ratio
+for sc in "${scenes[@]}"; do
+  pov="${sc%.sc}.pov"
+  [ -f "$pov" ] || { echo "compare_povray: no $pov for $sc" >&2; exit 1; }
+  sed -E "s/max_trace_level [0-9]+/max_trace_level $((depth + 1))/" "$pov" > "$tmp/scene.pov"
+  : > "$tmp/w.times"; : > "$tmp/p.times"
+  for ((i = 0; i < runs; i++)); do
+    t0=$(now)
+    "$whitted" "$sc" -o "$tmp/w.png" --width "$width" --height "$height" --max-depth "$depth" --threads "$threads" -q
+    t1=$(now)
+    povray +I"$tmp/scene.pov" +O"$tmp/p.png" +W"$width" +H"$height" -A -D -V -GA +WT"$threads" 2>/dev/null
+    t2=$(now)
+    echo "$t1 - $t0" | bc -l >> "$tmp/w.times"
+    echo "$t2 - $t1" | bc -l >> "$tmp/p.times"
+  done
+  w=$(median < "$tmp/w.times"); p=$(median < "$tmp/p.times")
+  printf "%-14s %12.3f %12.3f %8.1fx\n" "$(basename "$sc" .sc)" "$w" "$p" "$(echo "$p / $w" | bc -l)"
+done
