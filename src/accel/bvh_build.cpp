@@ -341,20 +341,19 @@ Bvh build_bvh(std::vector<Instance>& instances) {
             refs[i] = {V4{b.lo.x, b.lo.y, b.lo.z, index}, V4{b.hi.x, b.hi.y, b.hi.z, 0.0f}};
         }
     });
+    std::vector<std::uint32_t> source(n);  // leaf order: the instance that goes to place i
     {
-        const std::vector<BinNode> bin = build_binary(refs);
+        std::vector<BinNode> bin = build_binary(refs);
+        for (std::uint32_t i = 0; i < n; ++i) source[i] = refs[i].index();
+        std::vector<PrimRef>().swap(refs);  // lower the peak: the refs are done with
         bvh.box = bin[0].box;
-        // About n/2 binary leaves, so about n/6 wide nodes (each has up to four children).
+        // The binary tree has ~2n/L nodes for leaves of L; a wide node replaces three inner
+        // ones, so ~2n/(3L) wide nodes. Untouched reserved pages cost no memory.
         bvh.nodes.reserve(bin.size() / 3 + 1);
         collapse(bin, 0, bvh.nodes);
-        bvh.nodes.shrink_to_fit();
     }
 
     // Reorder the instances to leaf order in place, following the permutation's cycles.
-    std::vector<std::uint32_t> source(n);
-    for (std::uint32_t i = 0; i < n; ++i) source[i] = refs[i].index();
-    refs.clear();
-    refs.shrink_to_fit();
     for (std::uint32_t i = 0; i < n; ++i) {
         if (source[i] == i) continue;
         const Instance first = instances[i];
