@@ -24,20 +24,26 @@ RenderStats render(const Scene& scene, const RenderOptions& options, Image& imag
         for (int x = 0; x < w; x += ts) tiles.push_back({x, y, std::min(x + ts, w), std::min(y + ts, h)});
     stats.tiles_total = int(tiles.size());
 
-    const WhittedIntegrator integrator(scene, {options.max_depth, options.mode});
-    std::atomic<int> next{0}, done{0};
+    const WhittedIntegrator shared_integrator(scene, {options.max_depth, options.mode});
+    // The counters every worker writes get cache lines of their own (no false sharing with what
+    // the workers read per pixel).
+    alignas(64) std::atomic<int> next{0};
+    alignas(64) std::atomic<int> done{0};
     std::mutex stats_mutex;
     auto cancelled = [&] { return options.cancel && options.cancel->load(std::memory_order_relaxed); };
 
     auto worker = [&] {
-        RayCounts counts;
+        // Per-thread copies of what is read per pixel, and the ray counts on their own line.
+        const WhittedIntegrator integrator = shared_integrator;
+        const Camera camera = scene.flat.camera;
+        alignas(64) RayCounts counts;
         for (int i; (i = next.fetch_add(1)) < int(tiles.size());) {
             const Tile& t = tiles[i];
             bool complete = true;
             for (int y = t.y0; y < t.y1 && complete; ++y) {
                 if (cancelled()) { complete = false; break; }
                 for (int x = t.x0; x < t.x1; ++x) {
-                    glm::vec3 c = integrator.camera_ray(camera_ray(scene.flat.camera, w, h, x + 0.5f, y + 0.5f), counts);
+                    glm::vec3 c = integrator.camera_ray(camera_ray(camera, w, h, x + 0.5f, y + 0.5f), counts);
                     std::uint8_t* p = &image.rgb[(std::size_t(y) * w + x) * 3];
                     p[0] = to_byte(c.x);
                     p[1] = to_byte(c.y);
