@@ -1,6 +1,7 @@
 #pragma once
 // Scenes for the micro-benchmarks, built in code (no parser): random transformed shapes and big
 // grids of instances, plus the camera rays that look at them.
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -72,12 +73,16 @@ inline FlatScene grid_scene(int side, std::uint32_t seed = 1) {
     return flat;
 }
 
-// The camera rays of a width × height image, row by row.
-inline std::vector<Ray> camera_rays(const Camera& cam, int width, int height) {
+// The camera rays of a width × height image in the order the renderer traces them: 32×32 tiles
+// left to right, top to bottom, each row by row.
+inline std::vector<Ray> camera_rays(const Camera& cam, int width, int height, int tile = 32) {
     std::vector<Ray> rays;
     rays.reserve(std::size_t(width) * height);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) rays.push_back(camera_ray(cam, width, height, x + 0.5f, y + 0.5f));
+    for (int ty = 0; ty < height; ty += tile)
+        for (int tx = 0; tx < width; tx += tile)
+            for (int y = ty; y < std::min(ty + tile, height); ++y)
+                for (int x = tx; x < std::min(tx + tile, width); ++x)
+                    rays.push_back(camera_ray(cam, width, height, x + 0.5f, y + 0.5f));
     return rays;
 }
 

@@ -121,7 +121,19 @@ inline Span<T> intersect_cylinder(const Vec3<T>& o, const Vec3<T>& d) {
 // [-0.5, 0.5] (k in [0, 1]) keeps the lower nappe only and adds the base cap; its top plane
 // touches the solid only at the apex, so it is reported as the side.
 template <class T>
-inline Span<T> intersect_cone(const Vec3<T>& o, const Vec3<T>& d) {
+inline Span<T> intersect_cone(const Vec3<T>& o_in, const Vec3<T>& d) {
+    // From a far origin the quadratic's terms are huge and cancel (a ray from 1000 units away
+    // "hits" well off the surface in float). Then the line is restarted from its point nearest
+    // the centre, and that start's parameter is added back to the result.
+    Vec3<T> o = o_in;
+    T shift = T(0);
+    if (glm::dot(o, o) > T(16)) {
+        const T dd = glm::dot(d, d);
+        if (dd > T(0)) {
+            shift = -glm::dot(o, d) / dd;
+            o = o + shift * d;
+        }
+    }
     const T ko = T(0.5) - o.y, kd = -d.y;
     const T a = T(4) * (d.x * d.x + d.z * d.z) - kd * kd;
     const T hb = T(4) * (o.x * d.x + o.z * d.z) - ko * kd;
@@ -152,7 +164,7 @@ inline Span<T> intersect_cone(const Vec3<T>& o, const Vec3<T>& d) {
     }
     ShapePart pin = kPartSide, pout = kPartSide;
     clip_slab(o.y, d.y, kPartBottomCap, kPartSide, tin, tout, pin, pout);
-    return finish(tin, tout, pin, pout);
+    return finish(tin + shift, tout + shift, pin, pout);
 }
 
 template <class T>

@@ -160,6 +160,54 @@ TEST(Bvh, NearestHitMatchesBruteForceOnRandomScenes) {
     }
 }
 
+TEST(Bvh, FarAwayRaysMatchBruteForceAndHitTheSurface) {
+    // Small objects seen from ~1000 units away (a big grid scene): in float, the cone's quadratic
+    // once gave hits well off the surface from such origins, which the tight boxes then culled,
+    // so the BVH and brute force disagreed. Every hit must lie on its shape.
+    std::mt19937 rng(77);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::vector<Instance> instances;
+    for (int i = 0; i < 400; ++i) {
+        glm::vec3 c(float(i % 20) - 500.0f, 0.5f, float(i / 20) - 490.0f);
+        glm::mat4 m = glm::translate(glm::mat4(1.0f), c);
+        m = glm::rotate(m, 3.0f * u(rng), glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + 1e-3f));
+        m = glm::scale(m, glm::vec3(0.4f + 0.3f * u(rng), 0.4f + 0.3f * u(rng), 0.4f + 0.3f * u(rng)));
+        instances.push_back(make_instance(ShapeKind(i % 4), m, 0));
+    }
+    Bvh bvh = build_bvh(instances);
+    const glm::vec3 eye(0, 350, 750);
+    int hits = 0;
+    for (int i = 0; i < 3000; ++i) {
+        glm::vec3 target(-500.0f + 20.0f * (0.5f + 0.5f * u(rng)), 0.5f + 0.5f * u(rng), -490.0f + 20.0f * (0.5f + 0.5f * u(rng)));
+        Ray r{eye, glm::normalize(target - eye)};
+        expect_same_nearest(bvh, instances, r, 0.0f, kInf, i);
+        if (HasFatalFailure()) return;
+        Hit h;
+        if (!intersect_nearest(bvh, instances, r, 0.0f, kInf, h)) continue;
+        ++hits;
+        const Instance& inst = instances[h.instance];
+        const glm::vec3 p = to_object_space(inst, r).at(h.t);
+        const float radial = std::sqrt(p.x * p.x + p.z * p.z);
+        switch (inst.kind) {
+            case ShapeKind::Sphere: EXPECT_NEAR(glm::length(p), 0.5f, 2e-3f) << i; break;
+            case ShapeKind::Cone:
+                if (h.part == kPartSide) {
+                    EXPECT_NEAR(radial, 0.5f * (0.5f - p.y), 2e-3f) << i;
+                }
+                break;
+            case ShapeKind::Cylinder:
+                if (h.part == kPartSide) {
+                    EXPECT_NEAR(radial, 0.5f, 2e-3f) << i;
+                }
+                break;
+            case ShapeKind::Cube:
+                EXPECT_NEAR(std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))), 0.5f, 2e-3f) << i;
+                break;
+        }
+    }
+    EXPECT_GT(hits, 1000);
+}
+
 TEST(Bvh, TransmittanceMatchesBruteForce) {
     for (std::uint32_t seed : {11u, 12u, 13u}) {
         SCOPED_TRACE(seed);
