@@ -1,0 +1,124 @@
+// whitted: the command-line renderer. Scene file in, image file out.
+// Exit codes: 0 success, 1 bad usage, 2 bad scene, 3 I/O failure, 130 interrupted.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+
+#include "film/image_io.h"
+#include "interrupt.h"
+#include "progress.h"
+#include "render/load_scene.h"
+#include "render/renderer.h"
+
+namespace {
+
+constexpr int kExitUsage = 1, kExitScene = 2, kExitIo = 3, kExitInterrupted = 130;
+
+std::string bundled_showcase() {
+    // The source tree's scenes/ (known at build time) — the build is run from a checkout.
+    return std::string(WHITTED_SCENES_DIR) + "/showcase.sc";
+}
+
+std::string default_output(const std::string& scene, bool is_showcase) {
+    if (is_showcase) return "showcase.png";
+    return std::filesystem::path(scene).replace_extension(".png").string();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace whitted;
+    CLI::App app{"whitted: a Whitted-style ray tracer for SceneView/Ray .sc scene files"};
+    app.set_version_flag("--version", "whitted 0.1.0");
+    std::string scene_path, output, mode_name = "whitted", missing = "error";
+    int width = 640, height = 480, max_depth = 5, threads = 0;
+    bool lenient = false, quiet = false, stats = false;
+    std::vector<std::string> texture_dirs;
+    app.add_option("scene", scene_path, "Scene file (.sc); without one, renders the bundled showcase");
+    app.add_option("-o,--output", output, "Output image: .png (default), .bmp, .ppm, .jpg");
+    app.add_option("--width", width, "Image width in pixels")->check(CLI::Range(1, 32768));
+    app.add_option("--height", height, "Image height in pixels")->check(CLI::Range(1, 32768));
+    app.add_option("--max-depth", max_depth, "Recursion limit for reflection/refraction (camera ray = 0)")
+        ->check(CLI::Range(0, 1000));
+    app.add_option("--mode", mode_name, "Render mode")->check(CLI::IsMember({"whitted", "raycast", "normals", "depth"}));
+    app.add_option("--threads", threads, "Worker threads (0 = all hardware threads)")->check(CLI::Range(0, 1024));
+    app.add_option("--texture-path", texture_dirs, "Extra directory to look for textures in (repeatable)");
+    app.add_option("--missing-textures", missing, "What to do with a texture that cannot be loaded")
+        ->check(CLI::IsMember({"error", "checker"}));
+    app.add_flag("--lenient", lenient, "Skip unknown keywords and object types with a warning instead of failing");
+    app.add_flag("-q,--quiet", quiet, "No progress line");
+    app.add_flag("--stats", stats, "Print timings and ray counts");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        int code = app.exit(e);
+        return code == 0 ? 0 : kExitUsage;
+    }
+
+    const bool is_showcase = scene_path.empty();
+    if (is_showcase) scene_path = bundled_showcase();
+    if (output.empty()) output = default_output(scene_path, is_showcase);
+    if (!is_supported_output(output)) {
+        std::cerr << "whitted: error: cannot write '" << output << "': use .png, .bmp, .ppm, .jpg or .jpeg\n";
+        return kExitUsage;
+    }
+
+    LoadOptions load_options;
+    load_options.lenient = lenient;
+    load_options.textures.search_dirs = texture_dirs;
+    load_options.textures.missing = missing == "checker" ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
+    LoadResult loaded = load_scene(scene_path, load_options);
+    for (const Diagnostic& d : loaded.diagnostics) std::cerr << d.str() << "\n";
+    if (!loaded.ok()) {
+        if (!loaded.missing_textures.empty() && missing == "error")
+            std::cerr << "whitted: use --texture-path DIR to add a place to look, or --missing-textures=checker to "
+                         "render without them\n";
+        return kExitScene;
+    }
+
+    cli::install_interrupt_handler();
+    RenderOptions options;
+    options.width = width;
+    options.height = height;
+    options.max_depth = max_depth;
+    options.mode = *parse_render_mode(mode_name);
+    options.threads = threads;
+    options.cancel = &cli::interrupt_flag();
+    const int ts = options.tile_size;
+    cli::ProgressLine progress(((width + ts - 1) / ts) * ((height + ts - 1) / ts), !quiet && isatty(STDERR_FILENO));
+    options.on_tile = [&](const Tile&) { progress.tile_done(); };
+
+    Image image(width, height);
+    RenderStats rs = render(*loaded.scene, options, image);
+    progress.finish();
+
+    if (std::string err = write_image(image, output); !err.empty()) {
+        std::cerr << "whitted: error: " << err << "\n";
+        return kExitIo;
+    }
+    if (stats) {
+        const auto& ls = loaded.stats;
+        std::fprintf(stderr,
+                     "objects %zu, lights %zu, textures %zu\n"
+                     "parse %.3fs, flatten %.3fs, textures %.3fs, build %.3fs, render %.3fs (%d threads)\n"
+                     "rays: camera %llu, reflected %llu, refracted %llu, shadow %llu; %.2f Mrays/s\n",
+                     ls.objects, ls.lights, ls.textures, ls.parse_seconds, ls.flatten_seconds, ls.texture_seconds,
+                     ls.build_seconds, rs.seconds, threads > 0 ? threads : int(std::thread::hardware_concurrency()),
+                     (unsigned long long)rs.rays.camera, (unsigned long long)rs.rays.reflected,
+                     (unsigned long long)rs.rays.refracted, (unsigned long long)rs.rays.shadow,
+                     rs.seconds > 0 ? double(rs.rays.total()) / rs.seconds * 1e-6 : 0.0);
+    }
+    if (rs.cancelled) {
+        std::cerr << "whitted: interrupted: wrote the " << rs.tiles_done << " of " << rs.tiles_total
+                  << " tiles rendered so far to " << output << "\n";
+        return kExitInterrupted;
+    }
+    if (!quiet) std::cerr << "wrote " << output << "\n";
+    return 0;
+}

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs the Debian packages whitted builds and tests with. Safe to run again.
+# Usage: scripts/install-deps.sh [--viewer-test]   (--viewer-test adds Xvfb and tools for the viewer's screen test)
+set -euo pipefail
+packages=(build-essential cmake pkg-config libglm-dev libstb-dev libcli11-dev libgtest-dev libgmock-dev
+          libbenchmark-dev libfltk1.3-dev)
+if [[ "${1:-}" == "--viewer-test" ]]; then packages+=(xvfb x11-apps imagemagick xdotool); fi
+
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then exit 0; fi
+
+sudo=""
+if [[ $(id -u) -ne 0 ]]; then sudo="sudo"; fi
+echo "Installing: ${missing[*]}"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

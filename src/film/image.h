@@ -1,0 +1,28 @@
+#pragma once
+// An 8-bit RGB image, row 0 at the top: what the renderer produces and every frontend shows.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace whitted {
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgb;  // width·height·3 bytes, row-major
+
+    Image() = default;
+    Image(int w, int h) : width(w), height(h), rgb(std::size_t(w) * h * 3, 0) {}
+    glm::u8vec3 at(int x, int y) const {
+        const std::uint8_t* p = &rgb[(std::size_t(y) * width + x) * 3];
+        return {p[0], p[1], p[2]};
+    }
+};
+
+// ⌊255·clamp(c, 0, 1) + 0.5⌋ (scene-format.md §7): linear, no gamma curve.
+inline std::uint8_t to_byte(float c) {
+    c = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;  // also maps NaN to 0
+    return static_cast<std::uint8_t>(255.0f * c + 0.5f);
+}
+
+}  // namespace whitted

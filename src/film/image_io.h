@@ -1,0 +1,20 @@
+#pragma once
+// Image files: written atomically in the format the extension names; read for tests and textures.
+#include <string>
+
+#include "film/image.h"
+
+namespace whitted {
+
+// Writes PNG (default), BMP, PPM (binary P6) or JPEG by the file's extension (case-insensitive).
+// The image goes to a temporary file beside the target, which is renamed over it only when
+// complete, so a failure never leaves a half-written image. Returns "" or an error message.
+std::string write_image(const Image& image, const std::string& path);
+
+// True for the extensions write_image understands (.png .bmp .ppm .jpg .jpeg).
+bool is_supported_output(const std::string& path);
+
+// Reads any format stb_image reads into 8-bit RGB. Returns "" or an error message.
+std::string read_image(const std::string& path, Image& out);
+
+}  // namespace whitted

@@ -1,0 +1,29 @@
+#pragma once
+// SceneDescription (a graph of mastersubgraphs) → FlatScene (one Instance per drawn object).
+#include <cstddef>
+#include <vector>
+
+#include "flatten/flat_scene.h"
+#include "parse/diagnostic.h"
+#include "scene/scene_description.h"
+
+namespace whitted {
+
+struct FlattenResult {
+    FlatScene scene;
+    // One entry per material in scene.materials: the object block it came from, so that
+    // later stages (textures) can point at the scene file.
+    std::vector<const ObjectDesc*> material_sources;
+    std::vector<Diagnostic> diagnostics;
+    bool ok() const { return !has_errors(diagnostics); }
+};
+
+// Refuses scenes whose instancing would expand to more than `max_instances` objects
+// (a few nested subgraphs can multiply into billions), with an error instead of running
+// out of memory.
+FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances = 50'000'000);
+
+// The camera basis of spec §5 for an image of the given aspect ratio (width / height).
+Camera make_camera(const CameraDesc& desc);
+
+}  // namespace whitted

@@ -1,0 +1,20 @@
+#pragma once
+// What the integrator needs to know about a hit: built once from the BVH's Hit record.
+#include <glm/glm.hpp>
+
+#include "accel/scene.h"
+
+namespace whitted {
+
+struct Surface {
+    glm::vec3 point;      // world space
+    glm::vec3 normal;     // world space, unit, outward
+    glm::vec2 uv;         // texture coordinates of the unit shape (spec §8)
+    const Material* material;
+    glm::vec3 diffuse;    // material diffuse × texel
+    glm::vec3 ambient;    // material ambient × texel
+};
+
+Surface surface_at(const Scene& scene, const Ray& ray, const Hit& hit);
+
+}  // namespace whitted

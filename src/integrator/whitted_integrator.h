@@ -1,0 +1,51 @@
+#pragma once
+// Recursive Whitted ray tracing (scene-format.md §7): Phong direct lighting with shadow rays,
+// mirror reflection and Snell refraction up to a user-set depth.
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "accel/scene.h"
+#include "integrator/render_mode.h"
+
+namespace whitted {
+
+// Rays traced, by kind; each render thread keeps its own and they are summed at the end.
+struct RayCounts {
+    std::uint64_t camera = 0, reflected = 0, refracted = 0, shadow = 0;
+    std::uint64_t total() const { return camera + reflected + refracted + shadow; }
+    RayCounts& operator+=(const RayCounts& o) {
+        camera += o.camera; reflected += o.reflected; refracted += o.refracted; shadow += o.shadow;
+        return *this;
+    }
+};
+
+struct IntegratorOptions {
+    int max_depth = 5;  // camera ray = depth 0; no ray deeper than this is traced
+    RenderMode mode = RenderMode::Whitted;
+};
+
+class WhittedIntegrator {
+public:
+    WhittedIntegrator(const Scene& scene, const IntegratorOptions& options);
+
+    // Colour seen along a camera ray (linear, unclamped).
+    glm::vec3 camera_ray(const Ray& ray, RayCounts& counts) const;
+
+private:
+    glm::vec3 trace(const Ray& ray, int depth, const glm::vec3& weight, RayCounts& counts) const;
+    glm::vec3 debug_view(const Ray& ray, RayCounts& counts) const;
+
+    const Scene& scene_;
+    IntegratorOptions options_;
+    float depth_near_ = 0, depth_far_ = 1;  // distance range for the depth view
+};
+
+// Distance by which secondary rays leave a surface, relative to the point's magnitude so that
+// it stays above float rounding wherever the scene sits.
+inline float surface_offset(const glm::vec3& p) {
+    float m = std::max(std::max(std::abs(p.x), std::abs(p.y)), std::max(std::abs(p.z), 1.0f));
+    return 1e-4f * m;
+}
+
+}  // namespace whitted

@@ -1,0 +1,53 @@
+#include "render/load_scene.h"
+
+#include <chrono>
+
+#include "flatten/flatten.h"
+
+namespace whitted {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_seconds) {
+    LoadResult result;
+    result.stats.parse_seconds = parse_seconds;
+    result.diagnostics = std::move(parsed.diagnostics);
+    if (has_errors(result.diagnostics)) return result;
+
+    auto t = Clock::now();
+    FlattenResult flat = flatten(parsed.scene);
+    result.stats.flatten_seconds = since(t);
+    for (auto& d : flat.diagnostics) result.diagnostics.push_back(d);
+    if (!flat.ok()) return result;
+
+    t = Clock::now();
+    result.missing_textures = load_textures(flat, parsed.scene.path, options.textures, result.diagnostics);
+    result.stats.texture_seconds = since(t);
+    if (has_errors(result.diagnostics)) return result;
+
+    t = Clock::now();
+    result.stats.objects = flat.scene.instances.size();
+    result.stats.lights = flat.scene.lights.size();
+    result.stats.textures = flat.scene.textures.size();
+    result.scene = std::make_shared<const Scene>(accelerate(std::move(flat.scene)));
+    result.stats.build_seconds = since(t);
+    return result;
+}
+
+}  // namespace
+
+LoadResult load_scene(const std::string& path, const LoadOptions& options) {
+    auto t = Clock::now();
+    ParseResult parsed = parse_scene_file(path, {options.lenient});
+    return finish(std::move(parsed), options, since(t));
+}
+
+LoadResult load_scene_text(const std::string& text, const std::string& path, const LoadOptions& options) {
+    auto t = Clock::now();
+    ParseResult parsed = parse_scene_text(text, path, {options.lenient});
+    return finish(std::move(parsed), options, since(t));
+}
+
+}  // namespace whitted

@@ -1,0 +1,36 @@
+#pragma once
+// The library's front door: scene file → renderable Scene, every problem returned as data.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "accel/scene.h"
+#include "parse/parser.h"
+#include "texture/texture_loader.h"
+
+namespace whitted {
+
+struct LoadOptions {
+    bool lenient = false;
+    TextureOptions textures;
+};
+
+struct LoadStats {
+    double parse_seconds = 0, flatten_seconds = 0, texture_seconds = 0, build_seconds = 0;
+    std::size_t objects = 0, lights = 0, textures = 0;
+};
+
+struct LoadResult {
+    std::shared_ptr<const Scene> scene;     // null when the load failed
+    std::vector<Diagnostic> diagnostics;     // warnings and errors, in order
+    std::vector<MissingTexture> missing_textures;  // also reported in diagnostics
+    LoadStats stats;
+    bool ok() const { return scene != nullptr; }
+};
+
+LoadResult load_scene(const std::string& path, const LoadOptions& options = {});
+
+// The same from text already in memory; `path` names it in messages and anchors texture lookup.
+LoadResult load_scene_text(const std::string& text, const std::string& path, const LoadOptions& options = {});
+
+}  // namespace whitted

@@ -1,0 +1,95 @@
+#pragma once
+// The scene as the file describes it: camera, lights, and the graph of mastersubgraphs.
+// Produced by parse/, validated there (names resolve, no cycles, matrices invertible, ranges),
+// consumed by flatten/. Plain data, no behaviour.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "parse/diagnostic.h"
+
+namespace whitted {
+
+enum class ShapeKind : unsigned char { Cube = 0, Cylinder = 1, Cone = 2, Sphere = 3 };
+const char* shape_name(ShapeKind kind);
+
+struct TextureRef {
+    std::string file;  // as written in the scene
+    float repeat_u = 1, repeat_v = 1;
+    SourceLoc loc;  // of the `texture` keyword
+};
+
+struct MaterialDesc {
+    glm::vec3 ambient{0.0f}, diffuse{1.0f}, specular{0.0f};
+    glm::vec3 reflect{0.0f}, transparent{0.0f}, emit{0.0f};
+    float shine = 1.0f;
+    float ior = 1.0f;
+    std::optional<TextureRef> texture;
+};
+
+struct CameraDesc {
+    glm::vec3 eye{0, 0, 1};
+    glm::vec3 look{0, 0, -1};  // direction, used unless `focus` came later
+    glm::vec3 focus{0, 0, 0};  // point looked at
+    bool use_focus = false;    // the later of look/focus wins
+    glm::vec3 up{0, 1, 0};
+    float angle_deg = 60;  // full vertical field of view
+    float near_plane = 0.1f, far_plane = 1000.0f;  // kept, never clips rays
+    SourceLoc loc;  // of the last camera block (for messages)
+
+    glm::vec3 view_direction() const { return use_focus ? focus - eye : look; }
+};
+
+enum class LightType { Point, Directional, Spot };
+
+struct LightDesc {
+    LightType type = LightType::Point;
+    glm::vec3 position{1, 1, 1};
+    glm::vec3 direction{0, -1, 0};
+    glm::vec3 color{0.5f, 0.5f, 0.5f};
+    glm::vec3 falloff{1, 0, 0};  // `function c l q`
+    float aperture_deg = 180;
+    float exponent = 1;
+    SourceLoc loc;
+};
+
+struct ObjectDesc {
+    ShapeKind kind = ShapeKind::Cube;
+    MaterialDesc material;
+    SourceLoc loc;
+};
+
+struct SubgraphRef {
+    std::string name;
+    SourceLoc loc;
+};
+
+struct TransDesc {
+    glm::mat4 matrix{1.0f};  // T1 · T2 · … · Tn in the order written
+    std::vector<ObjectDesc> objects;
+    std::vector<SubgraphRef> subgraphs;
+    SourceLoc loc;
+};
+
+struct SubgraphDesc {
+    std::string name;
+    std::vector<TransDesc> children;
+    SourceLoc loc;
+};
+
+struct SceneDescription {
+    std::string path;  // the scene file (textures are looked up relative to it)
+    glm::vec3 background{0.0f};
+    glm::vec3 ambient_intensity{1.0f};  // global I_a; see scene-format.md §6 (decision)
+    CameraDesc camera;
+    std::vector<LightDesc> lights;  // blocks holding only `ambient` are not listed
+    std::vector<SubgraphDesc> subgraphs;
+    int root = -1;  // index of `root` in subgraphs
+
+    // Index of the mastersubgraph with that name, or -1.
+    int find_subgraph(const std::string& name) const;
+};
+
+}  // namespace whitted

@@ -1,0 +1,128 @@
+// Flattening the mastersubgraph graph: composition down the hierarchy (spec §3), instancing,
+// materials shared between instances, and the camera basis (spec §5).
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "accel/instance_geometry.h"
+#include "flatten/flatten.h"
+
+namespace whitted {
+namespace {
+
+glm::vec3 to_world(const Instance& inst, glm::vec3 p) { return glm::vec3(object_to_world(inst) * glm::vec4(p, 1.0f)); }
+
+void expect_vec(glm::vec3 a, glm::vec3 b, float tol = 1e-5f) {
+    EXPECT_NEAR(a.x, b.x, tol);
+    EXPECT_NEAR(a.y, b.y, tol);
+    EXPECT_NEAR(a.z, b.z, tol);
+}
+
+TransDesc trans(glm::mat4 m) {
+    TransDesc t;
+    t.matrix = m;
+    return t;
+}
+
+SceneDescription two_level_scene() {
+    // root: trans [ translate 10 0 0  subgraph child ] and trans [ object sphere ]
+    // child: trans [ scale 2 2 2  object cube ]
+    SceneDescription d;
+    d.path = "test.sc";
+    SubgraphDesc root{"root", {}, {}};
+    TransDesc a = trans(glm::translate(glm::mat4(1.0f), {10, 0, 0}));
+    a.subgraphs.push_back({"child", {}});
+    a.subgraphs.push_back({"child", {}});  // drawn twice: instancing
+    TransDesc b = trans(glm::mat4(1.0f));
+    b.objects.push_back({ShapeKind::Sphere, {}, {}});
+    root.children = {a, b};
+    SubgraphDesc child{"child", {}, {}};
+    TransDesc c = trans(glm::scale(glm::mat4(1.0f), {2, 2, 2}));
+    ObjectDesc cube{ShapeKind::Cube, {}, {}};
+    cube.material.diffuse = {1, 0, 0};
+    c.objects.push_back(cube);
+    child.children = {c};
+    d.subgraphs = {root, child};
+    d.root = 0;
+    return d;
+}
+
+TEST(Flatten, ComposesParentTimesChildDownTheHierarchy) {
+    FlattenResult r = flatten(two_level_scene());
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.scene.instances.size(), 3u);
+    int cubes = 0;
+    for (const Instance& inst : r.scene.instances) {
+        if (inst.kind != ShapeKind::Cube) continue;
+        ++cubes;
+        // world = T(10,0,0) · S(2): the corner (0.5, 0.5, 0.5) is scaled first, then moved.
+        expect_vec(to_world(inst, {0.5f, 0.5f, 0.5f}), {11, 1, 1});
+    }
+    EXPECT_EQ(cubes, 2);
+}
+
+TEST(Flatten, InstancesOfOneObjectShareOneMaterial) {
+    FlattenResult r = flatten(two_level_scene());
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r.scene.materials.size(), 2u);  // the cube's and the sphere's
+    std::uint32_t m = ~0u;
+    for (const Instance& inst : r.scene.instances)
+        if (inst.kind == ShapeKind::Cube) {
+            if (m == ~0u) m = inst.material;
+            EXPECT_EQ(inst.material, m);
+        }
+    EXPECT_EQ(r.scene.materials[m].diffuse, glm::vec3(1, 0, 0));
+}
+
+TEST(Flatten, RefusesInstancingThatExplodes) {
+    // s0 uses s1 twice, s1 uses s2 twice, …: 2^40 objects from 40 tiny blocks.
+    SceneDescription d;
+    d.path = "boom.sc";
+    for (int i = 0; i <= 40; ++i) {
+        SubgraphDesc s{i == 0 ? "root" : "s" + std::to_string(i), {}, {}};
+        TransDesc t = trans(glm::mat4(1.0f));
+        if (i < 40) t.subgraphs = {{"s" + std::to_string(i + 1), {}}, {"s" + std::to_string(i + 1), {}}};
+        else t.objects.push_back({ShapeKind::Sphere, {}, {}});
+        s.children.push_back(t);
+        d.subgraphs.push_back(s);
+    }
+    d.root = 0;
+    FlattenResult r = flatten(d, 1'000'000);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.diagnostics[0].message.find("1099511627776"), std::string::npos) << r.diagnostics[0].message;
+}
+
+TEST(Flatten, InverseTransposeBringsNormalsBack) {
+    // Under scale (4, 1, 1) a sphere's normal at object point (0.5,0.5,0)/√2·… : take the object
+    // normal (1,1,0)/√2; (M⁻¹)ᵀ scales x by 1/4, giving (1/4, 1, 0) normalised.
+    SceneDescription d;
+    d.path = "n.sc";
+    SubgraphDesc root{"root", {}, {}};
+    TransDesc t = trans(glm::scale(glm::mat4(1.0f), {4, 1, 1}));
+    t.objects.push_back({ShapeKind::Sphere, {}, {}});
+    root.children.push_back(t);
+    d.subgraphs.push_back(root);
+    d.root = 0;
+    FlattenResult r = flatten(d);
+    ASSERT_TRUE(r.ok());
+    expect_vec(normal_to_world(r.scene.instances[0], glm::normalize(glm::vec3(1, 1, 0))),
+               glm::normalize(glm::vec3(0.25f, 1, 0)));
+}
+
+TEST(Camera, OrthonormalisesUpAndUsesFocus) {
+    CameraDesc c;
+    c.eye = {0, 0, 10};
+    c.focus = {0, 0, 0};
+    c.use_focus = true;
+    c.up = {0, 1, 1};  // not perpendicular to the view
+    c.angle_deg = 90;
+    Camera cam = make_camera(c);
+    expect_vec(cam.forward, {0, 0, -1});
+    expect_vec(cam.up, {0, 1, 0});
+    expect_vec(cam.right, {1, 0, 0});
+    EXPECT_NEAR(cam.tan_half_fov, 1.0f, 1e-6f);
+}
+
+}  // namespace
+}  // namespace whitted

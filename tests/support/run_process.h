@@ -1,0 +1,24 @@
+#pragma once
+// Runs a program as a child process and collects its exit code and stderr, for frontend tests.
+#include <string>
+#include <vector>
+
+namespace whitted::test {
+
+struct ProcessResult {
+    int exit_code = -1;  // 128 + signal if killed by a signal
+    std::string output;  // stdout and stderr together
+};
+
+// Runs argv[0] with argv; if interrupt_after_ms >= 0, sends SIGINT after that many milliseconds.
+ProcessResult run_process(const std::vector<std::string>& argv, int interrupt_after_ms = -1);
+
+// Paths the tests need.
+std::string cli_path();
+std::string source_dir();
+// The shared corpus folder (…/shared), or "" when it is not there.
+std::string shared_dir();
+// A fresh empty directory for one test.
+std::string make_temp_dir();
+
+}  // namespace whitted::test
