@@ -233,7 +233,7 @@ private:
 
     void parse_file() {
         if (tokens_.size() == 1)
-            fail(SourceLoc{file_, 0, 0},
+            fail(SourceLoc{file_, 1, 1},  // located like any other error
                  "empty scene file: a scene needs at least 'mastersubgraph root [ ... ]'");
         while (peek().kind != TokenKind::End) {
             const Token& t = next();

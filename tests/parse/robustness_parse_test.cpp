@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "parse_test_util.h"
-#include "wild_corpus.h"
+#include "support/wild_corpus.h"
 
 namespace whitted {
 namespace {

@@ -11,13 +11,15 @@ using parse_test::kRoot;
 using parse_test::parse;
 using parse_test::parsed_ok;
 
-TEST(ParseStructure, EmptyFileIsAnErrorForTheWholeFile) {
+TEST(ParseStructure, EmptyFileIsAnErrorAtItsStart) {
+    // Located like every other error (editors jump to FILE:LINE:COL): at the start of the file.
     for (const char* text : {"", "  \r\n\t\n", "# only a comment\n"}) {
         const auto r = parse(text);
         ASSERT_FALSE(r.ok()) << "'" << text << "'";
         ASSERT_EQ(r.diagnostics.size(), 1u);
         EXPECT_EQ(r.diagnostics[0].loc.file, "t.sc");
-        EXPECT_EQ(r.diagnostics[0].loc.line, 0);
+        EXPECT_EQ(r.diagnostics[0].loc.line, 1) << "'" << text << "'";
+        EXPECT_EQ(r.diagnostics[0].loc.col, 1) << "'" << text << "'";
         EXPECT_NE(r.diagnostics[0].message.find("empty scene file"), std::string::npos);
     }
 }

@@ -1,0 +1,111 @@
+#pragma once
+// Where the wild scene corpus lives (shared/scenes/wild): $WHITTED_SHARED_DIR/scenes/wild, else
+// <source dir>/../shared/scenes/wild. Empty path when absent (tests then skip, saying why).
+#include <algorithm>
+#include <map>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace whitted {
+
+inline std::filesystem::path wild_corpus_dir() {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (const char* shared = std::getenv("WHITTED_SHARED_DIR")) {
+        const fs::path p = fs::path(shared) / "scenes" / "wild";
+        if (fs::is_directory(p, ec)) return p;
+    }
+#ifdef WHITTED_SOURCE_DIR
+    const fs::path p = fs::path(WHITTED_SOURCE_DIR) / ".." / "shared" / "scenes" / "wild";
+    if (fs::is_directory(p, ec)) return fs::canonical(p, ec);
+#endif
+    return {};
+}
+
+inline std::string wild_corpus_missing_reason() {
+    return "wild scene corpus not found: set WHITTED_SHARED_DIR (expects "
+           "$WHITTED_SHARED_DIR/scenes/wild) or place it at <source>/../shared/scenes/wild";
+}
+
+// All *.sc files under `dir`, sorted, as paths.
+inline std::vector<std::filesystem::path> wild_scene_files(const std::filesystem::path& dir) {
+    std::vector<std::filesystem::path> files;
+    std::error_code ec;
+    for (auto it = std::filesystem::recursive_directory_iterator(dir, ec);
+         !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
+        if (it->is_regular_file() && it->path().extension() == ".sc") files.push_back(it->path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// What each invalid file of the corpus must report, written down file by file with the reason,
+// so that any change in behaviour shows up as a named regression. Every other file must load.
+struct Expected {
+    int line, col;        // of the first error
+    const char* message;  // substring of the error message
+    const char* why;
+};
+
+inline const std::string kCitelao = "citelao__cse452-computer-graphics/data/scenes/";
+inline const std::string kSuziray = "suziray__COURSE-452-computer-graphics/cse452/";
+inline const std::string kTufts = "spanut01__Graphics/homework/5/data/tests/";
+inline const std::string kIndex = "_unattributed__search-index/";
+
+// Files that must FAIL in strict mode (all others must load).
+inline std::map<std::string, Expected> strict_failures() {
+    const Expected empty{1, 1, "empty scene file", "empty in the original repository"};
+    const Expected tufts{9, 3, "unknown keyword 'number' in light block",
+                         "older Brown/Tufts dialect (`light [ number 0`, top-level trans)"};
+    return {
+        {kCitelao + "dukes_adam_park.sc", empty},
+        {kCitelao + "freestone_amy.sc", empty},
+        {kCitelao + "tucek_jim_snowman.sc", empty},
+        {kTufts + "all.sc", tufts},
+        {kTufts + "all_effects.sc", tufts},
+        {kTufts + "all_objects.sc", tufts},
+        {kTufts + "mirror_test.sc", tufts},
+        {kTufts + "shadow_test.sc", tufts},
+        {kIndex + "idx58331149_castle.sc",
+         {127, 4, "unknown keyword 'alpha' in object block", "student extension `alpha 0.9`"}},
+        {kCitelao + "mcgurther_mark_chairs.sc",
+         {114, 8, "unknown keyword 'angularrate' in trans block",
+          "student extensions `angularrate`, `velocity`, `object cow`"}},
+        {kCitelao + "sudarsanam_nisha_undertheshade.sc",
+         {110, 1, "unknown keyword 'shear' in trans block", "student extension `shear`"}},
+        {kSuziray + "cse452shell/war_and_peace.sc",
+         {36, 10, "unknown object type 'ellipsoid'", "student shapes `ellipsoid`, `cactus`"}},
+        {kSuziray + "data/scenes/barnett_david.sc",
+         {117, 10, "unknown object type 'ellipsoid'", "student edit sphere -> ellipsoid"}},
+        {kSuziray + "data/scenes/simple0.sc",
+         {20, 12, "unknown object type 'ellipsoid'", "student shape `ellipsoid`"}},
+    };
+}
+
+// Files that must FAIL even in lenient mode (all others must load).
+inline std::map<std::string, Expected> lenient_failures() {
+    const Expected empty{1, 1, "empty scene file", "empty in the original repository"};
+    const Expected tufts{20, 1, "'trans' at top level",
+                         "Tufts dialect: scene is top-level trans blocks, no mastersubgraph"};
+    return {
+        {kCitelao + "dukes_adam_park.sc", empty},
+        {kCitelao + "freestone_amy.sc", empty},
+        {kCitelao + "tucek_jim_snowman.sc", empty},
+        {kTufts + "all.sc", tufts},
+        {kTufts + "all_effects.sc", tufts},
+        {kTufts + "all_objects.sc", tufts},
+        {kTufts + "mirror_test.sc", tufts},
+        {kTufts + "shadow_test.sc",
+         {56, 1, "'trans' at top level", "Tufts dialect (8 lights before the first trans)"}},
+        // Lenient mode skips unknown keywords, not malformed numbers: `diffuse 0.6. 0.6 0.7`.
+        {kCitelao + "sudarsanam_nisha_undertheshade.sc",
+         {138, 9, "expected a number for 'diffuse', found '0.6.'", "malformed number `0.6.`"}},
+    };
+}
+
+inline std::string corpus_name(const std::filesystem::path& file, const std::filesystem::path& dir) {
+    return file.lexically_relative(dir).generic_string();
+}
+
+}  // namespace whitted
