@@ -119,6 +119,14 @@ private:
         diags_.push_back({Severity::Warning, at, std::move(message)});
     }
 
+    // A '[' that opens no block: the reference ignores it wherever it appears (spec §1), so we do
+    // too, with a warning, since it often means the brackets around it do not match.
+    void skip_stray_opens(const std::string& where) {
+        while (peek().kind == TokenKind::Open)
+            warn(loc(next()), "'[' " + where + " opens no block and is ignored ('[' belongs after "
+                              "a block keyword such as 'trans' or 'object TYPE')");
+    }
+
     [[noreturn]] void fail_unclosed(const Token& opener, const std::string& block) {
         fail(peek(), "unexpected end of file: " + block + " block opened at " + pos_str(opener) +
                          " is not closed (missing ']')");
@@ -127,6 +135,7 @@ private:
     // ---- values -----------------------------------------------------------------------------
 
     float number(const Token& keyword) {
+        skip_stray_opens("among the numbers of '" + std::string(keyword.text) + "'");
         const Token& t = peek();
         const std::string what =
             "expected a number for '" + std::string(keyword.text) + "', found ";
@@ -155,6 +164,7 @@ private:
 
     // A name or file name after `keyword` (any word).
     const Token& word(const Token& keyword, const char* what) {
+        skip_stray_opens("after '" + std::string(keyword.text) + "'");
         const Token& t = peek();
         if (t.kind != TokenKind::Word)
             fail(t, "expected " + std::string(what) + " after '" + std::string(keyword.text) +
@@ -171,14 +181,12 @@ private:
 
     // The next keyword of a block, or nullptr at its closing `]`.
     const Token* next_in_block(const Token& opener, const std::string& block) {
+        skip_stray_opens("in " + block + " block opened at " + pos_str(opener));
         const Token& t = next();
         switch (t.kind) {
             case TokenKind::Close: return nullptr;
             case TokenKind::End: fail_unclosed(opener, block);
-            case TokenKind::Open:
-                fail(t, "unexpected '[' in " + block + " block opened at " + pos_str(opener) +
-                            " ('[' may only follow a block keyword such as 'trans' or "
-                            "'object TYPE')");
+            case TokenKind::Open:  // skipped above
             case TokenKind::Word: break;
         }
         return &t;
@@ -235,14 +243,12 @@ private:
         if (tokens_.size() == 1)
             fail(SourceLoc{file_, 1, 1},  // located like any other error
                  "empty scene file: a scene needs at least 'mastersubgraph root [ ... ]'");
-        while (peek().kind != TokenKind::End) {
+        while (true) {
+            skip_stray_opens("at top level");
+            if (peek().kind == TokenKind::End) break;
             const Token& t = next();
             if (t.kind == TokenKind::Close)
                 fail(t, "unexpected ']' at top level: no block is open");
-            if (t.kind == TokenKind::Open)
-                fail(t,
-                     "unexpected '[' at top level ('[' may only follow a block keyword such "
-                     "as 'camera' or 'mastersubgraph NAME')");
             if (t.text == "background")
                 parse_background(t);
             else if (t.text == "camera")
@@ -447,6 +453,7 @@ private:
     }
 
     void parse_object(const Token& opener, TransDesc& trans) {
+        skip_stray_opens("after 'object'");
         const Token& type = peek();
         if (type.kind != TokenKind::Word)
             fail(type, std::string("expected an object type after 'object' (one of: ") +

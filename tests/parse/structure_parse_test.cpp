@@ -71,8 +71,9 @@ TEST(ParseStructure, DuplicateNameIsAnErrorAtTheSecondName) {
 }
 
 TEST(ParseStructure, MissingNames) {
-    EXPECT_TRUE(
-        error_at(parse("mastersubgraph [ ]"), 1, 16, "expected a name after 'mastersubgraph'"));
+    // The '[' there is ignored (spec §1), so the name is missing where the ']' stands.
+    EXPECT_TRUE(error_at(parse("mastersubgraph [ ]"), 1, 18,
+                         "expected a name after 'mastersubgraph', found ']'"));
     EXPECT_TRUE(error_at(parse("mastersubgraph root [ trans [ subgraph ] ]"), 1, 40,
                          "expected a subgraph name after 'subgraph', found ']'"));
 }
@@ -154,11 +155,40 @@ TEST(ParseStructure, EndOfFileInsideABlock) {
                          "unexpected end of file: light block opened at 1:25"));
 }
 
-TEST(ParseStructure, StrayBrackets) {
+// The warning for a '[' that opens no block, at line:col.
+::testing::AssertionResult stray_open_warned(const ParseResult& r, int line, int col) {
+    for (const auto& d : r.diagnostics)
+        if (d.severity == Severity::Warning && d.loc.line == line && d.loc.col == col &&
+            d.message.find("opens no block and is ignored") != std::string::npos)
+            return ::testing::AssertionSuccess();
+    auto failure = ::testing::AssertionFailure() << "no stray '[' warning at " << line << ":" << col;
+    for (const auto& d : r.diagnostics) failure << "\n  " << d.str();
+    return failure;
+}
+
+TEST(ParseStructure, StrayClosingBracketIsAnError) {
     EXPECT_TRUE(error_at(parse(std::string(kRoot) + "  ]"), 2, 3, "unexpected ']' at top level"));
-    EXPECT_TRUE(error_at(parse("[ " + std::string(kRoot)), 1, 1, "unexpected '[' at top level"));
-    EXPECT_TRUE(error_at(parse("mastersubgraph root [ trans [ [ object cube ] ]"), 1, 31,
-                         "unexpected '[' in trans block opened at 1:23"));
+}
+
+TEST(ParseStructure, StrayOpeningBracketsAreIgnoredWithAWarning) {
+    // Spec §1: the reference ignores '[' wherever it appears; we do too, and say where it was.
+    auto r = parse("[ " + std::string(kRoot));
+    ASSERT_TRUE(parsed_ok(r));
+    EXPECT_TRUE(stray_open_warned(r, 1, 1));
+
+    r = parse("camera [ [ eye 1 2 [ 3 ]\nmastersubgraph [ root [ trans [ object [ cube ] ] ]");
+    ASSERT_TRUE(parsed_ok(r));
+    EXPECT_TRUE(stray_open_warned(r, 1, 10));  // a second '[' after a block's own
+    EXPECT_TRUE(stray_open_warned(r, 1, 20));  // among a keyword's numbers
+    EXPECT_TRUE(stray_open_warned(r, 2, 16));  // between 'mastersubgraph' and its name
+    EXPECT_TRUE(stray_open_warned(r, 2, 40));  // between 'object' and its type
+    EXPECT_EQ(r.scene.camera.eye, glm::vec3(1, 2, 3));
+    EXPECT_EQ(parse_test::count(r, Severity::Warning), 4);
+
+    // Ignoring it leaves the brackets unbalanced: the error that follows names the open block.
+    r = parse("mastersubgraph root [ trans [ [ object cube ] ]");
+    EXPECT_TRUE(stray_open_warned(r, 1, 31));
+    EXPECT_TRUE(error_at(r, 1, 48, "mastersubgraph 'root' block opened at 1:1 is not closed"));
 }
 
 TEST(ParseStructure, UnknownKeywordsNameTheBlock) {
