@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -170,6 +171,16 @@ private:
             fail(t, "expected " + std::string(what) + " after '" + std::string(keyword.text) +
                         "', found " + describe(t));
         return next();
+    }
+
+    static std::string bottom_row(const glm::mat4& m) {
+        std::string s;
+        for (int c = 0; c < 4; ++c) {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, "%s%g", c ? " " : "", double(m[c][3]));
+            s += buf;
+        }
+        return s;
     }
 
     // ---- block framing ----------------------------------------------------------------------
@@ -431,7 +442,13 @@ private:
             } else if (w == "matrixRC" || w == "matrixCR") {
                 std::array<float, 16> v{};
                 for (float& x : v) x = number(*k);
-                m = m * (w == "matrixRC" ? matrix_from_rows(v) : matrix_from_columns(v));
+                const glm::mat4 given = w == "matrixRC" ? matrix_from_rows(v) : matrix_from_columns(v);
+                // Shapes are intersected through the inverse of an affine map: a projective
+                // bottom row would be dropped without a word, so it is refused instead.
+                if (given[0][3] != 0 || given[1][3] != 0 || given[2][3] != 0 || given[3][3] != 1)
+                    fail(*k, "'" + std::string(w) + "' is not an affine transform: its last row must be "
+                             "0 0 0 1, found " + bottom_row(given));
+                m = m * given;
             } else if (w == "object") {
                 parse_object(*k, trans);
             } else if (w == "subgraph") {

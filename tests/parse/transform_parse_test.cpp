@@ -76,6 +76,20 @@ TEST(ParseTransform, MatrixRcIsRowByRowAndMatrixCrColumnByColumn) {
         for (int r = 0; r < 4; ++r) EXPECT_EQ(rc[c][r], cr[r][c]);
 }
 
+TEST(ParseTransform, ProjectiveMatrixIsAnError) {
+    // Row by row, the last row is the 4th group; column by column, the 4th number of each group.
+    EXPECT_TRUE(error_at(parse("mastersubgraph root [ trans [\n  matrixRC 1 0 0 0  0 1 0 0  0 0 1 0  "
+                               "0 0 0.5 1 ] ]"),
+                         2, 3, "'matrixRC' is not an affine transform: its last row must be 0 0 0 1, "
+                               "found 0 0 0.5 1"));
+    EXPECT_TRUE(error_at(parse("mastersubgraph root [ trans [ matrixCR 1 0 0 0  0 1 0 0  0 0 1 0  "
+                               "0 0 0 2 ] ]"),
+                         1, 31, "found 0 0 0 2"));
+    EXPECT_TRUE(error_at(parse("mastersubgraph root [ trans [ matrixCR 1 0 0 1  0 1 0 0  0 0 1 0  "
+                               "0 0 0 1 ] ]"),
+                         1, 31, "found 1 0 0 1"));
+}
+
 TEST(ParseTransform, MatricesComposeWithTheOthers) {
     expect_maps(trans_matrix("translate 0 0 1 matrixRC 2 0 0 0  0 2 0 0  0 0 2 0  0 0 0 1"),
                 {1, 1, 1}, {2, 2, 3});
@@ -108,7 +122,7 @@ TEST(ParseTransform, SingularMatrixIsAnErrorAtTheTransBlock) {
                                "0 0 0 1 ] ]"),
                          1, 23, "singular"));
     EXPECT_TRUE(error_at(parse("mastersubgraph root [ trans [ matrixCR 0 0 0 0 0 0 0 0 0 0 0 0 "
-                               "0 0 0 0 ] ]"),
+                               "0 0 0 1 ] ]"),
                          1, 23, "singular"));
     // Overflow to infinity.
     EXPECT_TRUE(error_at(parse("mastersubgraph root [ trans [ scale 1e30 1 1 scale 1e30 1 1 ] ]"),
