@@ -6,7 +6,7 @@
 #
 # Features used: all four shapes (cube, cylinder, cone, sphere); translate, rotate,
 # non-uniform scale and matrixRC; point lights with attenuation (function c l q),
-# a directional light and a spotlight (aperture + exponent); hard shadows and a
+# two directional lights and two spotlights (aperture + exponent); hard shadows and a
 # tinted shadow through coloured glass; a mirror (reflect); glass (transparent +
 # ior); specular highlights; a background colour; instancing through the
 # mastersubgraphs `pillar` and `tiles3`, each used several times via `subgraph`.
@@ -58,6 +58,24 @@ light [
   function 1 0 0.005
   aperture 22
   exponent 6
+]
+
+# Low evening light: a second, warm directional light grazing in from the right.
+light [
+  type directional
+  direction -1 -0.35 -0.25
+  color 0.22 0.16 0.08
+]
+
+# Second spotlight: a soft warm pool on the gold cylinder, from the front right.
+light [
+  type spotlight
+  position 6 6 4
+  direction -0.45 -0.7 -0.55
+  color 0.9 0.75 0.45
+  function 1 0 0.004
+  aperture 16
+  exponent 2
 ]
 
 # Global ambient intensity (scales every object's ambient colour).

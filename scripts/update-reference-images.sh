@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Re-renders the reference images of the image regression test (tests/regression/) from every
+# scene under scenes/, with the command-line renderer of a Release build. Run it only after a
+# change meant to alter pictures, then LOOK at every image it wrote (git diff shows which) before
+# committing them: a reference is only worth what its inspection was.
+# Usage: scripts/update-reference-images.sh [BUILD_DIR]      (default build-release)
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="$(realpath "${1:-$root/build-release}")"
+cli="$build/apps/cli/whitted"
+[[ -x "$cli" ]] || { echo "no $cli: build Release first (scripts/test.sh does)" >&2; exit 1; }
+out="$root/tests/regression/reference"
+mkdir -p "$out"
+cd "$root/scenes"
+find . -name '*.sc' | sort | while read -r scene; do
+    name="${scene#./}"; name="${name%.sc}"; name="${name//\//__}"
+    "$cli" "$scene" -o "$out/$name.png" --width 160 --height 120 -q
+    echo "$out/$name.png"
+done
