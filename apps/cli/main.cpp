@@ -71,6 +71,7 @@ int main(int argc, char** argv) {
 
     LoadOptions load_options;
     load_options.lenient = lenient;
+    load_options.threads = threads;  // --threads 1 means one thread for the build too
     load_options.textures.search_dirs = texture_dirs;
     load_options.textures.missing = missing == "checker" ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
     LoadResult loaded = load_scene(scene_path, load_options);

@@ -215,6 +215,7 @@ void ViewerWindow::layout() {
 LoadOptions ViewerWindow::load_options() const {
     LoadOptions o;
     o.lenient = options_.lenient;
+    o.threads = int(threads_->value());  // the BVH build uses the same threads as the render
     o.textures.search_dirs = options_.texture_dirs;
     o.textures.overrides = texture_overrides_;
     o.textures.missing = options_.checker_textures || checker_scenes_.count(scene_) ? MissingTexturePolicy::Checker

@@ -36,9 +36,10 @@ struct Bvh {
     Bounds bounds() const { return box; }
 };
 
-// Builds the hierarchy and reorders `instances` to match it. Throws std::length_error beyond
+// Builds the hierarchy and reorders `instances` to match it, on `threads` threads (0 = all
+// hardware threads; the tree is the same for any count). Throws std::length_error beyond
 // Bvh4Node::kMaxInstances instances.
-Bvh build_bvh(std::vector<Instance>& instances);
+Bvh build_bvh(std::vector<Instance>& instances, int threads = 0);
 
 struct Hit {
     float t;

@@ -101,12 +101,15 @@ Bounds padded_world_bounds(const Instance& inst) {
     return b;
 }
 
-int build_threads() { return int(std::min(8u, std::max(1u, std::thread::hardware_concurrency()))); }
+// The threads a build uses: as asked (0 = all hardware threads), at most 8.
+int build_threads(int asked) {
+    const int all = int(std::max(1u, std::thread::hardware_concurrency()));
+    return std::clamp(asked > 0 ? asked : all, 1, 8);
+}
 
 // Runs body(begin, end) over [0, n) in chunks, on all build threads when n is large.
 template <class Body>
-void parallel_chunks(std::size_t n, Body body) {
-    const int threads = build_threads();
+void parallel_chunks(std::size_t n, int threads, Body body) {
     if (threads == 1 || n < kParallelBuildMin) {
         body(std::uint32_t(0), std::uint32_t(n));
         return;
@@ -232,13 +235,12 @@ void build_subtree(std::vector<PrimRef>& refs, const Task& root, std::vector<Bin
 // The binary tree over all refs. The top is built by this thread; the subtrees below it are
 // built in parallel into separate arrays, then appended in a fixed order (so the result does not
 // depend on the thread count or timing).
-std::vector<BinNode> build_binary(std::vector<PrimRef>& refs) {
+std::vector<BinNode> build_binary(std::vector<PrimRef>& refs, int threads) {
     const std::uint32_t n = static_cast<std::uint32_t>(refs.size());
     std::vector<BinNode> nodes;
     nodes.reserve(2 * std::size_t(n));
     nodes.emplace_back();
     const Task root{0, n, 0, 0, {}, {}, false};
-    const int threads = build_threads();
     if (threads == 1 || n < kParallelBuildMin) {
         build_subtree(refs, root, nodes, 0, nullptr);
         return nodes;
@@ -332,14 +334,15 @@ std::uint32_t collapse(const std::vector<BinNode>& bin, std::uint32_t root, std:
 
 }  // namespace
 
-Bvh build_bvh(std::vector<Instance>& instances) {
+Bvh build_bvh(std::vector<Instance>& instances, int threads_asked) {
+    const int threads = build_threads(threads_asked);
     Bvh bvh;
     const std::size_t n = instances.size();
     if (n == 0) return bvh;
     if (n >= Bvh4Node::kMaxInstances) throw std::length_error("too many instances for the BVH");
 
     std::vector<PrimRef> refs(n);
-    parallel_chunks(n, [&](std::uint32_t begin, std::uint32_t end) {
+    parallel_chunks(n, threads, [&](std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t i = begin; i < end; ++i) {
             const Bounds b = padded_world_bounds(instances[i]);
             float index;
@@ -349,7 +352,7 @@ Bvh build_bvh(std::vector<Instance>& instances) {
     });
     std::vector<std::uint32_t> source(n);  // leaf order: the instance that goes to place i
     {
-        std::vector<BinNode> bin = build_binary(refs);
+        std::vector<BinNode> bin = build_binary(refs, threads);
         for (std::uint32_t i = 0; i < n; ++i) source[i] = refs[i].index();
         std::vector<PrimRef>().swap(refs);  // lower the peak: the refs are done with
         bvh.box = bin[0].box;

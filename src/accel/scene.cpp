@@ -2,10 +2,10 @@
 
 namespace whitted {
 
-Scene accelerate(FlatScene flat) {
+Scene accelerate(FlatScene flat, int threads) {
     Scene scene;
     scene.flat = std::move(flat);
-    scene.bvh = build_bvh(scene.flat.instances);
+    scene.bvh = build_bvh(scene.flat.instances, threads);
     return scene;
 }
 

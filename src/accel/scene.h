@@ -10,7 +10,7 @@ struct Scene {
     Bvh bvh;
 };
 
-// Builds the BVH (reordering flat.instances to match it).
-Scene accelerate(FlatScene flat);
+// Builds the BVH (reordering flat.instances to match it) on `threads` threads (0 = all).
+Scene accelerate(FlatScene flat, int threads = 0);
 
 }  // namespace whitted

@@ -31,7 +31,7 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     result.stats.objects = flat.scene.instances.size();
     result.stats.lights = flat.scene.lights.size();
     result.stats.textures = flat.scene.textures.size();
-    result.scene = std::make_shared<const Scene>(accelerate(std::move(flat.scene)));
+    result.scene = std::make_shared<const Scene>(accelerate(std::move(flat.scene), options.threads));
     result.stats.build_seconds = since(t);
     return result;
 }

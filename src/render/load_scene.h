@@ -12,6 +12,7 @@ namespace whitted {
 
 struct LoadOptions {
     bool lenient = false;
+    int threads = 0;  // for building the BVH; 0 = all hardware threads
     TextureOptions textures;
 };
 
