@@ -12,12 +12,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::run_process;
-
-std::string write_file(const std::string& dir, const std::string& name, const std::string& text) {
-    std::string path = dir + "/" + name;
-    std::ofstream(path) << text;
-    return path;
-}
+using test::write_file;
 
 const char* kSimpleScene = R"(camera [ eye 0 0 5 focus 0 0 0 ]
 light [ position 2 2 5 color 1 1 1 ]

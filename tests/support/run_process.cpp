@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <thread>
 
 namespace whitted::test {
@@ -58,6 +59,12 @@ std::string shared_dir() {
 std::string make_temp_dir() {
     std::string tmpl = (std::filesystem::temp_directory_path() / "whitted-test-XXXXXX").string();
     return mkdtemp(tmpl.data()) ? tmpl : "";
+}
+
+std::string write_file(const std::string& dir, const std::string& name, const std::string& text) {
+    std::string path = dir + "/" + name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
 }
 
 }  // namespace whitted::test

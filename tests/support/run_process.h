@@ -20,5 +20,7 @@ std::string source_dir();
 std::string shared_dir();
 // A fresh empty directory for one test.
 std::string make_temp_dir();
+// Writes `text` to dir/name and returns that path.
+std::string write_file(const std::string& dir, const std::string& name, const std::string& text);
 
 }  // namespace whitted::test

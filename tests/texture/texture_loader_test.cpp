@@ -64,24 +64,7 @@ Picture solid(glm::u8vec3 c) {
     return p;
 }
 
-class TextureLoader : public ::testing::Test {
-protected:
-    // Every place a texture is looked for must be private to the test: the scene lives in
-    // <tmp>/whitted-test-X/scenes (so its parent is ours too, not the shared /tmp) and the
-    // current directory is <tmp>/whitted-test-X/cwd.
-    void SetUp() override {
-        const std::string base = make_temp_dir();
-        ASSERT_FALSE(base.empty());
-        dir_ = base + "/scenes";
-        fs::create_directories(dir_);
-        fs::create_directories(base + "/cwd");
-        cwd_.emplace(base + "/cwd");
-        scene_ = dir_ + "/scene.sc";
-    }
-    void TearDown() override { cwd_.reset(); }
-    std::string dir_, scene_;
-    std::optional<ScopedCwd> cwd_;
-};
+using TextureLoader = PrivateTextureDirs;
 
 // ---- formats ---------------------------------------------------------------------------------
 

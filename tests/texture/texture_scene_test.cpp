@@ -41,24 +41,7 @@ std::string two_objects(const std::string& tex1, const std::string& tex2) {
     return s;
 }
 
-class TextureScene : public ::testing::Test {
-protected:
-    // Every place a texture is looked for must be private to the test: the scene lives in
-    // <tmp>/whitted-test-X/scenes (so its parent is ours too, not the shared /tmp) and the
-    // current directory is <tmp>/whitted-test-X/cwd.
-    void SetUp() override {
-        const std::string base = make_temp_dir();
-        ASSERT_FALSE(base.empty());
-        dir_ = base + "/scenes";
-        fs::create_directories(dir_);
-        fs::create_directories(base + "/cwd");
-        cwd_.emplace(base + "/cwd");
-        scene_ = dir_ + "/scene.sc";
-    }
-    void TearDown() override { cwd_.reset(); }
-    std::string dir_, scene_;
-    std::optional<ScopedCwd> cwd_;
-};
+using TextureScene = PrivateTextureDirs;
 
 // Two objects, one file: one decode (also reached by another spelling of the same path).
 TEST_F(TextureScene, SameFileDecodedOncePerScene) {

@@ -15,9 +15,11 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <gtest/gtest.h>
 #include <stb/stb_image_write.h>
 
 #include "film/image.h"
+#include "support/run_process.h"
 #include "render/load_scene.h"
 #include "render/renderer.h"
 
@@ -126,6 +128,27 @@ public:
 
 private:
     std::filesystem::path saved_;
+};
+
+// A fixture whose scene directory, its parent and the current directory are all private to the
+// test, so that no texture lookup can find a file another test left behind.
+class PrivateTextureDirs : public ::testing::Test {
+protected:
+    // Every place a texture is looked for must be private to the test: the scene lives in
+    // <tmp>/whitted-test-X/scenes (so its parent is ours too, not the shared /tmp) and the
+    // current directory is <tmp>/whitted-test-X/cwd.
+    void SetUp() override {
+        const std::string base = whitted::test::make_temp_dir();
+        ASSERT_FALSE(base.empty());
+        dir_ = base + "/scenes";
+        std::filesystem::create_directories(dir_);
+        std::filesystem::create_directories(base + "/cwd");
+        cwd_.emplace(base + "/cwd");
+        scene_ = dir_ + "/scene.sc";
+    }
+    void TearDown() override { cwd_.reset(); }
+    std::string dir_, scene_;
+    std::optional<ScopedCwd> cwd_;
 };
 
 // ---------------------------------------------------------------------------------------------

@@ -53,12 +53,6 @@ std::size_t lit_bytes(const Image& img) {
     return n;
 }
 
-std::string write_file(const std::string& dir, const std::string& name, const std::string& text) {
-    std::string path = dir + "/" + name;
-    std::ofstream(path) << text;
-    return path;
-}
-
 const char* kBallScene = R"(camera [ eye 0 0 5 focus 0 0 0 ]
 light [ position 2 2 5 color 1 1 1 ]
 mastersubgraph root [ trans [ object sphere [ diffuse 1 0 0 ] ] ]
@@ -214,7 +208,7 @@ TEST(RenderController, DestructorDoesNotWaitForTheRender) {
 
 TEST(RenderController, LoadsASceneFileAndReportsItsCounts) {
     std::string dir = test::make_temp_dir();
-    std::string path = write_file(dir, "ball.sc", kBallScene);
+    std::string path = test::write_file(dir, "ball.sc", kBallScene);
     RenderController c;
     RenderSettings s;
     s.width = 40;
@@ -238,7 +232,7 @@ TEST(RenderController, LoadsASceneFileAndReportsItsCounts) {
     ASSERT_TRUE(c.wait(30s));
     EXPECT_FALSE(c.status().scene_reused);
     std::this_thread::sleep_for(20ms);
-    write_file(dir, "ball.sc", std::string(kBallScene) + "light [ position -2 2 5 color 1 1 1 ]\n");
+    test::write_file(dir, "ball.sc", std::string(kBallScene) + "light [ position -2 2 5 color 1 1 1 ]\n");
     c.start(path, {}, s);
     ASSERT_TRUE(c.wait(30s));
     EXPECT_FALSE(c.status().scene_reused);
@@ -247,7 +241,7 @@ TEST(RenderController, LoadsASceneFileAndReportsItsCounts) {
 
 TEST(RenderController, ASceneWithErrorsEndsInTheFailedStateWithItsMessages) {
     std::string dir = test::make_temp_dir();
-    std::string path = write_file(dir, "bad.sc", "camera [ eye 0 0 5 focus 0 0 0 ]\nlight [ position 1 2 ]\n"
+    std::string path = test::write_file(dir, "bad.sc", "camera [ eye 0 0 5 focus 0 0 0 ]\nlight [ position 1 2 ]\n"
                                                  "mastersubgraph root [ trans [ object blob [ ] ] ]\n");
     RenderController c;
     RenderSettings s;
@@ -270,7 +264,7 @@ TEST(RenderController, ASceneWithErrorsEndsInTheFailedStateWithItsMessages) {
     ASSERT_TRUE(c.wait(30s));
     EXPECT_EQ(c.status().state, RenderState::Failed);
     EXPECT_FALSE(c.status().message.empty());
-    write_file(dir, "bad.sc", kBallScene);
+    test::write_file(dir, "bad.sc", kBallScene);
     c.start(path, {}, s);
     ASSERT_TRUE(c.wait(30s));
     EXPECT_EQ(c.status().state, RenderState::Finished);
@@ -280,7 +274,7 @@ TEST(RenderController, ASceneWithErrorsEndsInTheFailedStateWithItsMessages) {
 
 TEST(RenderController, AMissingTextureIsReportedThenCheckeredOrOverridden) {
     std::string dir = test::make_temp_dir();
-    std::string path = write_file(dir, "tex.sc", R"(camera [ eye 0 0 5 focus 0 0 0 ]
+    std::string path = test::write_file(dir, "tex.sc", R"(camera [ eye 0 0 5 focus 0 0 0 ]
 light [ position 2 2 5 color 1 1 1 ]
 mastersubgraph root [
   trans [ object cube [ diffuse 1 1 1 texture nowhere/wood.bmp 1 1 ] ]
