@@ -39,17 +39,6 @@ Light to_light(const LightDesc& l) {
     return out;
 }
 
-Instance make_instance(const glm::mat4& object_to_world, ShapeKind kind, std::uint32_t material) {
-    // Invert in double: deep hierarchies of small scales lose precision fast in float.
-    glm::dmat4 inv = glm::inverse(glm::dmat4(object_to_world));
-    Instance inst{};
-    for (int r = 0; r < 3; ++r)
-        inst.world_to_object[r] = glm::vec4(float(inv[0][r]), float(inv[1][r]), float(inv[2][r]), float(inv[3][r]));
-    inst.kind = kind;
-    inst.material = material;
-    return inst;
-}
-
 // Number of instances each subgraph expands to, saturating instead of overflowing.
 class InstanceCounter {
 public:
@@ -76,6 +65,17 @@ private:
 };
 
 }  // namespace
+
+Instance make_instance(const glm::mat4& object_to_world, ShapeKind kind, std::uint32_t material) {
+    // Invert in double: deep hierarchies of small scales lose precision fast in float.
+    glm::dmat4 inv = glm::inverse(glm::dmat4(object_to_world));
+    Instance inst{};
+    for (int r = 0; r < 3; ++r)
+        inst.world_to_object[r] = glm::vec4(float(inv[0][r]), float(inv[1][r]), float(inv[2][r]), float(inv[3][r]));
+    inst.kind = kind;
+    inst.material = material;
+    return inst;
+}
 
 Camera make_camera(const CameraDesc& desc) {
     Camera cam;

@@ -3,7 +3,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "accel/scene.h"
-#include "flatten/flat_scene.h"
+#include "flatten/flatten.h"
 
 namespace whitted::test {
 
@@ -13,14 +13,8 @@ public:
 
     // Places a unit shape with the object-to-world matrix m.
     SceneBuilder& add(ShapeKind kind, const glm::mat4& m, const Material& material) {
-        glm::dmat4 inv = glm::inverse(glm::dmat4(m));
-        Instance inst{};
-        for (int r = 0; r < 3; ++r)
-            inst.world_to_object[r] = glm::vec4(float(inv[0][r]), float(inv[1][r]), float(inv[2][r]), float(inv[3][r]));
-        inst.kind = kind;
-        inst.material = std::uint32_t(flat_.materials.size());
+        flat_.instances.push_back(make_instance(m, kind, std::uint32_t(flat_.materials.size())));
         flat_.materials.push_back(material);
-        flat_.instances.push_back(inst);
         return *this;
     }
     SceneBuilder& light(const Light& l) { flat_.lights.push_back(l); return *this; }
