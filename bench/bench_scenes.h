@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "accel/bvh_packet.h"
 #include "accel/scene.h"
 #include "render/renderer.h"
 
@@ -84,6 +85,33 @@ inline std::vector<Ray> camera_rays(const Camera& cam, int width, int height, in
                 for (int x = tx; x < std::min(tx + tile, width); ++x)
                     rays.push_back(camera_ray(cam, width, height, x + 0.5f, y + 0.5f));
     return rays;
+}
+
+// The same camera rays as packets, in the order the renderer traces them: per 32×32 tile,
+// blocks of kPacketWidth × kPacketHeight pixels row by row, lanes row-major in a block; blocks cut
+// by the image's edge have their outside lanes inactive.
+struct CameraPacket {
+    Ray rays[kPacketSize];
+    unsigned active = 0;
+};
+inline std::vector<CameraPacket> camera_packets(const Camera& cam, int width, int height, int tile = 32) {
+    std::vector<CameraPacket> packets;
+    for (int ty = 0; ty < height; ty += tile)
+        for (int tx = 0; tx < width; tx += tile) {
+            const int x1 = std::min(tx + tile, width), y1 = std::min(ty + tile, height);
+            for (int by = ty; by < y1; by += kPacketHeight)
+                for (int bx = tx; bx < x1; bx += kPacketWidth) {
+                    CameraPacket p;
+                    for (int l = 0; l < kPacketSize; ++l) {
+                        const int x = bx + l % kPacketWidth, y = by + l / kPacketWidth;
+                        if (x >= x1 || y >= y1) continue;
+                        p.rays[l] = camera_ray(cam, width, height, x + 0.5f, y + 0.5f);
+                        p.active |= 1u << l;
+                    }
+                    packets.push_back(p);
+                }
+        }
+    return packets;
 }
 
 }  // namespace whitted::bench

@@ -3,6 +3,7 @@
 // Ray throughput is reported as the counter "rays" (rays per second of wall time); the /threads:N
 // argument is the number of std::threads sharing each batch of rays.
 #include <atomic>
+#include <bit>
 #include <memory>
 #include <thread>
 
@@ -20,16 +21,16 @@ namespace {
 // take milliseconds on a VM whose idle vCPU must be woken) is amortised as it is in a render.
 constexpr int kPasses = 8;
 
-// Runs body(begin, end) over [0, n) kPasses times, in chunks shared by `threads` threads.
+// Runs body(begin, end) over [0, n) kPasses times, in chunks of `chunk` items shared by `threads`
+// threads.
 template <class Body>
-void parallel_for(std::size_t n, int threads, Body body) {
-    constexpr std::size_t kChunk = 2048;
-    const std::size_t chunks = (n + kChunk - 1) / kChunk;  // per pass
+void parallel_for(std::size_t n, int threads, Body body, std::size_t chunk = 2048) {
+    const std::size_t chunks = (n + chunk - 1) / chunk;  // per pass
     alignas(64) std::atomic<std::size_t> next{0};  // own cache line: no false sharing with locals
-    auto worker = [&next, chunks, n, body]() mutable {  // its own copy of body: nothing shared is read per ray
+    auto worker = [&next, chunks, chunk, n, body]() mutable {  // its own copy of body: nothing shared is read per ray
         for (std::size_t c; (c = next.fetch_add(1)) < kPasses * chunks;) {
-            const std::size_t begin = (c % chunks) * kChunk;
-            body(begin, std::min(n, begin + kChunk));
+            const std::size_t begin = (c % chunks) * chunk;
+            body(begin, std::min(n, begin + chunk));
         }
     };
     std::vector<std::thread> pool;
@@ -41,6 +42,7 @@ void parallel_for(std::size_t n, int threads, Body body) {
 struct Fixture {
     Scene scene;
     std::vector<Ray> primary;
+    std::vector<CameraPacket> packets;  // the same camera rays, as the renderer's packets
     std::vector<Ray> shadow;         // from the primary hits toward the light
     std::vector<float> shadow_reach;
 };
@@ -49,6 +51,7 @@ std::unique_ptr<Fixture> make_fixture(FlatScene flat, int width, int height) {
     auto f = std::make_unique<Fixture>();
     f->scene = accelerate(std::move(flat));
     f->primary = camera_rays(f->scene.flat.camera, width, height);
+    f->packets = camera_packets(f->scene.flat.camera, width, height);
     const glm::vec3 light = f->scene.flat.lights[0].position;
     for (const Ray& r : f->primary) {
         Hit hit;
@@ -94,6 +97,29 @@ void primary(benchmark::State& state, Fixture& f) {
     state.counters["hit_fraction"] = double(hits) / (double(f.primary.size()) * kPasses * state.iterations());
 }
 
+// The same camera rays as primary(), traced kPacketSize at a time (intersect_nearest_packet).
+void primary_packets(benchmark::State& state, Fixture& f) {
+    const int threads = int(state.range(0));
+    alignas(64) std::atomic<std::uint64_t> hits{0};
+    for (auto _ : state) {
+        const Bvh* bvh = &f.scene.bvh;
+        const std::vector<Instance>* instances = &f.scene.flat.instances;
+        const CameraPacket* packets = f.packets.data();
+        std::atomic<std::uint64_t>* total = &hits;
+        parallel_for(f.packets.size(), threads, [=](std::size_t b, std::size_t e) {
+            std::uint64_t n = 0;
+            for (std::size_t i = b; i < e; ++i) {
+                Hit hit[kPacketSize];
+                n += std::popcount(intersect_nearest_packet(*bvh, *instances, packets[i].rays, packets[i].active, 0.0f,
+                                                            INFINITY, hit));
+            }
+            *total += n;
+        }, 2048 / kPacketSize);  // the same rays per chunk as primary()
+    }
+    state.counters["rays"] = benchmark::Counter(double(f.primary.size()) * kPasses * state.iterations(), benchmark::Counter::kIsRate);
+    state.counters["hit_fraction"] = double(hits) / (double(f.primary.size()) * kPasses * state.iterations());
+}
+
 void shadow(benchmark::State& state, Fixture& f) {
     const int threads = int(state.range(0));
     alignas(64) std::atomic<std::uint64_t> blocked{0};
@@ -115,8 +141,10 @@ void shadow(benchmark::State& state, Fixture& f) {
 }
 
 void BM_PrimarySpheres1k(benchmark::State& s) { primary(s, spheres_1k()); }
+void BM_PrimarySpheres1kPacket(benchmark::State& s) { primary_packets(s, spheres_1k()); }
 void BM_ShadowSpheres1k(benchmark::State& s) { shadow(s, spheres_1k()); }
 void BM_PrimaryGrid1M(benchmark::State& s) { primary(s, grid_1m()); }
+void BM_PrimaryGrid1MPacket(benchmark::State& s) { primary_packets(s, grid_1m()); }
 void BM_ShadowGrid1M(benchmark::State& s) { shadow(s, grid_1m()); }
 
 void BM_BvhBuild(benchmark::State& state) {
@@ -159,8 +187,10 @@ void BM_Render1080p(benchmark::State& state) {
 
 BENCHMARK(BM_BvhBuild)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_PrimarySpheres1k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PrimarySpheres1kPacket)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ShadowSpheres1k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_PrimaryGrid1M)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PrimaryGrid1MPacket)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ShadowGrid1M)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Render1080p)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -12,28 +12,24 @@
 #endif
 
 #include "accel/bvh.h"
-#include "accel/instance_geometry.h"
-#include "shapes/unit_shape_math.h"
+#include "accel/bvh_ray.h"
 
 namespace whitted {
 namespace {
 
-// Binary depth is at most 64 SAH levels plus 27 median levels (bvh_build.cpp); every wide level
-// consumes at least one binary level and pushes at most three entries.
-constexpr int kStackSize = 3 * 96;
+using bvh_detail::intersect_instance;
+using bvh_detail::kStackSize;
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-// The ray as the box test wants it: origin, reciprocal direction and which box row is the near
-// plane per axis. A zero direction component becomes a huge finite reciprocal, so that a ray
-// lying exactly in a slab plane gives 0·huge = 0 rather than 0·inf = NaN.
+// The ray as the box test wants it: origin, reciprocal direction (bvh_ray.h) and which box row
+// is the near plane per axis.
 struct BoxRay {
     float o[3], inv[3];
     int near_row[3], far_row[3];
     explicit BoxRay(const Ray& r) {
         for (int a = 0; a < 3; ++a) {
-            const float d = r.direction[a];
             o[a] = r.origin[a];
-            inv[a] = 1.0f / (std::fabs(d) > 1e-30f ? d : std::copysign(1e-30f, d));
+            inv[a] = bvh_detail::safe_reciprocal(r.direction[a]);
             const bool neg = std::signbit(inv[a]);
             near_row[a] = neg ? 3 + a : a;
             far_row[a] = neg ? a : 3 + a;
@@ -88,12 +84,6 @@ struct BoxTester {
 #endif
 
 inline int lowest_bit(int mask) { return __builtin_ctz(unsigned(mask)); }
-
-// The object-space interval of instance `inst` along the world ray.
-inline shape_math::Span<float> intersect_instance(const Instance& inst, const Ray& ray) {
-    const Ray o = to_object_space(inst, ray);
-    return shape_math::intersect<float>(inst.kind, o.origin, o.direction);
-}
 
 struct StackEntry {
     std::uint32_t ref;
@@ -157,21 +147,9 @@ bool intersect_nearest(const Bvh& bvh, const std::vector<Instance>& instances, c
             }
         } else {
             const std::uint32_t first = Bvh4Node::leaf_first(ref), end = first + Bvh4Node::leaf_count(ref);
-            for (std::uint32_t i = first; i < end; ++i) {
-                const auto s = intersect_instance(inst[i], ray);
-                if (s.count == 0) continue;
-                // The nearest crossing in (t_min, t_max); of equal distances the lowest index wins,
-                // as in the brute-force loop.
-                int k = s.t[0] > t_min ? 0 : 1;
-                const float t = s.t[k];
-                if (!(t > t_min && t < t_max)) continue;
-                if (t < best || (t == best && found && i < best_index)) {
-                    best = t;
-                    best_index = i;
-                    best_part = s.part[k];
-                    found = true;
-                }
-            }
+            for (std::uint32_t i = first; i < end; ++i)
+                bvh_detail::offer_nearest(intersect_instance(inst[i], ray), i, t_min, t_max, best, best_index, best_part,
+                                          found);
         }
         // Pop, skipping boxes that a nearer hit found meanwhile has made irrelevant.
         for (;;) {

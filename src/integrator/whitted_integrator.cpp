@@ -25,6 +25,14 @@ bool refract(const glm::vec3& d, const glm::vec3& n, float eta, glm::vec3& out) 
     return true;
 }
 
+// The range every nearest-hit query searches, one ray at a time or a packet at a time: anything
+// in front of the ray's origin.
+constexpr float kHitMin = 0.0f, kHitMax = kInfinity;
+
+bool nearest_hit(const Scene& scene, const Ray& ray, Hit& hit) {
+    return intersect_nearest(scene.bvh, scene.flat.instances, ray, kHitMin, kHitMax, hit);
+}
+
 }  // namespace
 
 WhittedIntegrator::WhittedIntegrator(const Scene& scene, const IntegratorOptions& options)
@@ -45,21 +53,28 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const IntegratorOptions
 }
 
 glm::vec3 WhittedIntegrator::camera_ray(const Ray& ray, RayCounts& counts) const {
-    ++counts.camera;
-    if (options_.mode != RenderMode::Whitted) return debug_view(ray, counts);
-    return trace(ray, 0, glm::vec3(1.0f), counts);
+    Hit hit;
+    return camera_ray(ray, nearest_hit(scene_, ray, hit) ? &hit : nullptr, counts);
 }
 
-glm::vec3 WhittedIntegrator::debug_view(const Ray& ray, RayCounts&) const {
-    Hit hit;
-    if (!intersect_nearest(scene_.bvh, scene_.flat.instances, ray, 0.0f, kInfinity, hit))
-        return options_.mode == RenderMode::Raycast ? scene_.flat.background : glm::vec3(0.0f);
-    Surface s = surface_at(scene_, ray, hit);
+unsigned WhittedIntegrator::camera_hits(const Ray (&rays)[kPacketSize], unsigned active, Hit (&hits)[kPacketSize]) const {
+    return intersect_nearest_packet(scene_.bvh, scene_.flat.instances, rays, active, kHitMin, kHitMax, hits);
+}
+
+glm::vec3 WhittedIntegrator::camera_ray(const Ray& ray, const Hit* first_hit, RayCounts& counts) const {
+    ++counts.camera;
+    if (options_.mode != RenderMode::Whitted) return debug_view(ray, first_hit);
+    return shade(ray, first_hit, 0, glm::vec3(1.0f), counts);
+}
+
+glm::vec3 WhittedIntegrator::debug_view(const Ray& ray, const Hit* hit) const {
+    if (!hit) return options_.mode == RenderMode::Raycast ? scene_.flat.background : glm::vec3(0.0f);
+    Surface s = surface_at(scene_, ray, *hit);
     switch (options_.mode) {
         case RenderMode::Raycast: return s.diffuse;
         case RenderMode::Normals: return 0.5f * (s.normal + 1.0f);
         case RenderMode::Depth: {
-            float d = hit.t * glm::length(ray.direction);
+            float d = hit->t * glm::length(ray.direction);
             return glm::vec3(1.0f - std::clamp((d - depth_near_) / (depth_far_ - depth_near_), 0.0f, 1.0f));
         }
         case RenderMode::Whitted: break;
@@ -68,10 +83,16 @@ glm::vec3 WhittedIntegrator::debug_view(const Ray& ray, RayCounts&) const {
 }
 
 glm::vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const glm::vec3& weight, RayCounts& counts) const {
-    const FlatScene& flat = scene_.flat;
     Hit hit;
-    if (!intersect_nearest(scene_.bvh, flat.instances, ray, 0.0f, kInfinity, hit)) return flat.background;
+    return shade(ray, nearest_hit(scene_, ray, hit) ? &hit : nullptr, depth, weight, counts);
+}
 
+// The colour along `ray` given its nearest hit (nullptr: none), at recursion depth `depth`.
+glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit* nearest, int depth, const glm::vec3& weight,
+                                   RayCounts& counts) const {
+    const FlatScene& flat = scene_.flat;
+    if (!nearest) return flat.background;
+    const Hit& hit = *nearest;
     const Surface s = surface_at(scene_, ray, hit);
     const Material& m = *s.material;
     const glm::vec3 dir = glm::normalize(ray.direction);

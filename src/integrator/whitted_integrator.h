@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include "accel/bvh_packet.h"
 #include "accel/scene.h"
 #include "integrator/render_mode.h"
 
@@ -32,9 +33,18 @@ public:
     // Colour seen along a camera ray (linear, unclamped).
     glm::vec3 camera_ray(const Ray& ray, RayCounts& counts) const;
 
+    // The same for a camera ray whose nearest hit was found beforehand by camera_hits
+    // (nullptr = it hit nothing): the renderer finds a tile's camera hits a packet at a time.
+    glm::vec3 camera_ray(const Ray& ray, const Hit* first_hit, RayCounts& counts) const;
+
+    // The nearest hits of a packet of camera rays (the lanes set in `active`), exactly as
+    // camera_ray(ray, counts) would find them one by one; bit l of the result = lane l hit.
+    unsigned camera_hits(const Ray (&rays)[kPacketSize], unsigned active, Hit (&hits)[kPacketSize]) const;
+
 private:
     glm::vec3 trace(const Ray& ray, int depth, const glm::vec3& weight, RayCounts& counts) const;
-    glm::vec3 debug_view(const Ray& ray, RayCounts& counts) const;
+    glm::vec3 shade(const Ray& ray, const Hit* nearest, int depth, const glm::vec3& weight, RayCounts& counts) const;
+    glm::vec3 debug_view(const Ray& ray, const Hit* hit) const;
 
     const Scene& scene_;
     IntegratorOptions options_;

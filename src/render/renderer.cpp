@@ -15,6 +15,58 @@ Ray camera_ray(const Camera& cam, int width, int height, float x, float y) {
     return Ray{cam.eye, glm::normalize(cam.forward + sx * cam.right + sy * cam.up)};
 }
 
+namespace {
+
+// The camera rays of a band of kPacketHeight rows of a tile and their nearest hits, found a
+// packet of kPacketWidth × kPacketHeight pixels at a time (the packet's rays are neighbours, so
+// they share most of their way through the BVH). Shading then goes row by row as before.
+class CameraBand {
+public:
+    struct Pixel {
+        Ray ray;
+        Hit hit;
+        bool found;
+    };
+
+    // For tiles up to `max_width` pixels wide; the only allocation, once per worker.
+    explicit CameraBand(int max_width) : width_(max_width), pixels_(std::size_t(max_width) * kPacketHeight) {}
+
+    // Traces the rows [y0, y0 + kPacketHeight) of tile t, cut at its bottom edge (packets cut by
+    // the tile's edges leave their outside lanes off).
+    void trace(const WhittedIntegrator& integrator, const Camera& camera, int image_w, int image_h, const Tile& t,
+               int y0) {
+        y0_ = y0;
+        for (int x0 = t.x0; x0 < t.x1; x0 += kPacketWidth) {
+            Ray rays[kPacketSize];
+            unsigned active = 0;
+            for (int l = 0; l < kPacketSize; ++l) {
+                const int x = x0 + l % kPacketWidth, y = y0 + l / kPacketWidth;
+                if (x >= t.x1 || y >= t.y1) continue;
+                rays[l] = camera_ray(camera, image_w, image_h, x + 0.5f, y + 0.5f);
+                active |= 1u << l;
+            }
+            Hit hits[kPacketSize];
+            const unsigned found = integrator.camera_hits(rays, active, hits);
+            for (int l = 0; l < kPacketSize; ++l) {
+                if (!((active >> l) & 1)) continue;
+                Pixel& p = at(x0 - t.x0 + l % kPacketWidth, y0 + l / kPacketWidth);
+                p.ray = rays[l];
+                p.found = (found >> l) & 1;
+                if (p.found) p.hit = hits[l];
+            }
+        }
+    }
+
+    // Pixel (x - tile's x0, y) of the band last traced.
+    Pixel& at(int tile_x, int y) { return pixels_[std::size_t(y - y0_) * width_ + tile_x]; }
+
+private:
+    int width_, y0_ = 0;
+    std::vector<Pixel> pixels_;
+};
+
+}  // namespace
+
 RenderStats render(const Scene& scene, const RenderOptions& options, Image& image) {
     const auto start = std::chrono::steady_clock::now();
     RenderStats stats;
@@ -37,13 +89,16 @@ RenderStats render(const Scene& scene, const RenderOptions& options, Image& imag
         const WhittedIntegrator integrator = shared_integrator;
         const Camera camera = scene.flat.camera;
         alignas(64) RayCounts counts;
+        CameraBand band(std::min(ts, w));
         for (int i; (i = next.fetch_add(1)) < int(tiles.size());) {
             const Tile& t = tiles[i];
             bool complete = true;
             for (int y = t.y0; y < t.y1 && complete; ++y) {
                 if (cancelled()) { complete = false; break; }
+                if ((y - t.y0) % kPacketHeight == 0) band.trace(integrator, camera, w, h, t, y);
                 for (int x = t.x0; x < t.x1; ++x) {
-                    glm::vec3 c = integrator.camera_ray(camera_ray(camera, w, h, x + 0.5f, y + 0.5f), counts);
+                    const CameraBand::Pixel& px = band.at(x - t.x0, y);
+                    glm::vec3 c = integrator.camera_ray(px.ray, px.found ? &px.hit : nullptr, counts);
                     std::uint8_t* p = &image.rgb[(std::size_t(y) * w + x) * 3];
                     p[0] = to_byte(c.x);
                     p[1] = to_byte(c.y);

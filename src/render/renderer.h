@@ -4,11 +4,16 @@
 #include <atomic>
 #include <functional>
 
+#include "accel/bvh_packet.h"
 #include "accel/scene.h"
 #include "film/image.h"
 #include "integrator/whitted_integrator.h"
 
 namespace whitted {
+
+// The camera rays are traced in packets of kPacketWidth × kPacketHeight neighbouring pixels.
+constexpr int kPacketWidth = 4;
+constexpr int kPacketHeight = kPacketSize / kPacketWidth;
 
 struct Tile {
     int x0, y0, x1, y1;  // pixels [x0, x1) × [y0, y1)

@@ -9,74 +9,14 @@
 #include <gtest/gtest.h>
 
 #include "accel/bvh.h"
+#include "accel/bvh_test_scenes.h"
 #include "accel/instance_geometry.h"
 
 namespace whitted {
 namespace {
 
+using namespace test;
 constexpr float kInf = std::numeric_limits<float>::infinity();
-
-Instance make_instance(ShapeKind kind, const glm::mat4& m, std::uint32_t material) {
-    glm::dmat4 inv = glm::inverse(glm::dmat4(m));
-    Instance inst{};
-    for (int r = 0; r < 3; ++r)
-        inst.world_to_object[r] = glm::vec4(float(inv[0][r]), float(inv[1][r]), float(inv[2][r]), float(inv[3][r]));
-    inst.kind = kind;
-    inst.material = material;
-    return inst;
-}
-
-// Translation, rotation, shear and non-uniform scale with random signs (mirrored instances).
-glm::mat4 random_affine(std::mt19937& rng, float spread) {
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    glm::mat4 m = glm::translate(glm::mat4(1.0f), spread * glm::vec3(u(rng), u(rng), u(rng)));
-    m = glm::rotate(m, 3.14159f * u(rng), glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + 1e-3f));
-    glm::mat4 shear(1.0f);
-    shear[1][0] = 0.5f * u(rng);
-    shear[2][1] = 0.5f * u(rng);
-    m = m * shear;
-    auto scale = [&] { float s = 0.2f + 1.8f * std::fabs(u(rng)); return u(rng) < -0.6f ? -s : s; };
-    return glm::scale(m, glm::vec3(scale(), scale(), scale()));
-}
-
-struct RandomScene {
-    std::vector<Instance> instances;
-    std::vector<Material> materials;
-};
-
-RandomScene random_scene(std::uint32_t seed, int n, float spread) {
-    std::mt19937 rng(seed);
-    RandomScene s;
-    Material opaque, glass, tinted;
-    glass.transparent = glm::vec3(0.9f);
-    tinted.transparent = glm::vec3(0.8f, 0.5f, 0.2f);
-    s.materials = {opaque, glass, tinted};
-    for (int i = 0; i < n; ++i)
-        s.instances.push_back(make_instance(ShapeKind(i % 4), random_affine(rng, spread), std::uint32_t(rng() % 3)));
-    return s;
-}
-
-// Rays from anywhere: half aimed at an instance (so that most hit something), some along axes.
-std::vector<Ray> random_rays(std::uint32_t seed, int n, float spread, const std::vector<Instance>& instances) {
-    std::mt19937 rng(seed * 7919u + 1);
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    std::vector<Ray> rays;
-    for (int i = 0; i < n; ++i) {
-        Ray r;
-        r.origin = 1.3f * spread * glm::vec3(u(rng), u(rng), u(rng));
-        if (i % 2 == 0 && !instances.empty()) {
-            const Instance& target = instances[rng() % instances.size()];
-            glm::vec3 centre(object_to_world(target)[3]);
-            r.direction = glm::normalize(centre + 0.5f * glm::vec3(u(rng), u(rng), u(rng)) - r.origin);
-        } else {
-            r.direction = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
-        }
-        if (i % 16 == 1) r.direction = glm::vec3(0, 0, 0) + glm::vec3(0, 0, u(rng) < 0 ? -1 : 1);  // zero x, y
-        if (i % 16 == 3) r.direction = glm::vec3(u(rng) < 0 ? -1 : 1, 0, 0);
-        rays.push_back(r);
-    }
-    return rays;
-}
 
 void expect_same_nearest(const Bvh& bvh, const std::vector<Instance>& instances, const Ray& r, float t_min,
                          float t_max, int ray_index) {
@@ -172,7 +112,7 @@ TEST(Bvh, FarAwayRaysMatchBruteForceAndHitTheSurface) {
         glm::mat4 m = glm::translate(glm::mat4(1.0f), c);
         m = glm::rotate(m, 3.0f * u(rng), glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + 1e-3f));
         m = glm::scale(m, glm::vec3(0.4f + 0.3f * u(rng), 0.4f + 0.3f * u(rng), 0.4f + 0.3f * u(rng)));
-        instances.push_back(make_instance(ShapeKind(i % 4), m, 0));
+        instances.push_back(make_instance(m, ShapeKind(i % 4), 0));
     }
     Bvh bvh = build_bvh(instances);
     const glm::vec3 eye(0, 350, 750);
@@ -241,7 +181,7 @@ TEST(Bvh, EmptyScene) {
 }
 
 TEST(Bvh, SingleInstance) {
-    std::vector<Instance> one{make_instance(ShapeKind::Sphere, glm::mat4(1.0f), 0)};
+    std::vector<Instance> one{make_instance(glm::mat4(1.0f), ShapeKind::Sphere, 0)};
     Bvh bvh = build_bvh(one);
     check_structure(bvh, one);
     Hit h;
@@ -256,7 +196,7 @@ TEST(Bvh, AllInstancesInOnePlace) {
     std::vector<Instance> same;
     std::mt19937 rng(3);
     glm::mat4 m = random_affine(rng, 1.0f);
-    for (int i = 0; i < 1000; ++i) same.push_back(make_instance(ShapeKind(i % 4 == 3 ? 3 : 0), m, 0));
+    for (int i = 0; i < 1000; ++i) same.push_back(make_instance(m, ShapeKind(i % 4 == 3 ? 3 : 0), 0));
     Bvh bvh = build_bvh(same);
     check_structure(bvh, same);
     std::vector<Ray> rays = random_rays(3, 300, 2.0f, same);
@@ -275,7 +215,7 @@ TEST(Bvh, DeepStacksOf100kInstances) {
     for (int i = 0; i < n; ++i) {
         float x = std::pow(1.0002f, float(i)) - 1.0f;  // 0 … ~4.8e8, ever sparser
         float s = 0.5f + 0.001f * float(i % 1000);
-        stack.push_back(make_instance(ShapeKind(i % 4), glm::scale(glm::translate(glm::mat4(1.0f), {x, 0, 0}), glm::vec3(s)), 0));
+        stack.push_back(make_instance(glm::scale(glm::translate(glm::mat4(1.0f), {x, 0, 0}), glm::vec3(s)), ShapeKind(i % 4), 0));
     }
     Bvh bvh = build_bvh(stack);
     check_structure(bvh, stack);

@@ -1,9 +1,12 @@
-// The image-space driver: pixel-centre rays, thread independence, cancellation.
+// The image-space driver: pixel-centre rays, packets that change no pixel, thread independence,
+// cancellation.
 #include <atomic>
 #include <chrono>
+#include <string>
 
 #include <gtest/gtest.h>
 
+#include "render/load_scene.h"
 #include "render/renderer.h"
 #include "support/scene_builder.h"
 
@@ -54,6 +57,59 @@ TEST(Renderer, ImageIsByteIdenticalForAnyThreadCount) {
     size_t lit = 0;
     for (auto v : one.rgb) lit += v != 0;
     EXPECT_GT(lit, one.rgb.size() / 4) << "the test scene should fill much of the image";
+}
+
+// The image as it was made before camera rays were traced in packets: pixel by pixel, each
+// camera ray traced on its own (WhittedIntegrator::camera_ray(ray, counts) finds its hit itself).
+Image one_ray_at_a_time(const Scene& scene, const RenderOptions& o, RayCounts& counts) {
+    const WhittedIntegrator integrator(scene, {o.max_depth, o.mode});
+    Image image(o.width, o.height);
+    for (int y = 0; y < o.height; ++y)
+        for (int x = 0; x < o.width; ++x) {
+            glm::vec3 c = integrator.camera_ray(camera_ray(scene.flat.camera, o.width, o.height, x + 0.5f, y + 0.5f), counts);
+            std::uint8_t* p = &image.rgb[(std::size_t(y) * o.width + x) * 3];
+            p[0] = to_byte(c.x);
+            p[1] = to_byte(c.y);
+            p[2] = to_byte(c.z);
+        }
+    return image;
+}
+
+// render() finds the camera rays' hits a packet at a time: every byte and every ray count must be
+// what tracing them one at a time gives, in every mode, for image and tile sizes that cut packets
+// (4×2 pixels) at the tiles' and the image's edges.
+void expect_packets_change_nothing(const Scene& scene, const char* name) {
+    struct Size { int w, h, tile; };
+    const Size sizes[] = {{97, 61, 16}, {64, 48, 32}, {33, 17, 5}, {10, 7, 1}, {160, 120, 32}};
+    for (RenderMode mode : {RenderMode::Whitted, RenderMode::Raycast, RenderMode::Normals, RenderMode::Depth})
+        for (const Size& size : sizes) {
+            SCOPED_TRACE(std::string(name) + " " + render_mode_name(mode) + " " + std::to_string(size.w) + "x" +
+                         std::to_string(size.h) + " tile " + std::to_string(size.tile));
+            RenderOptions o;
+            o.width = size.w;
+            o.height = size.h;
+            o.tile_size = size.tile;
+            o.mode = mode;
+            o.threads = 2;
+            RayCounts want_counts;
+            const Image want = one_ray_at_a_time(scene, o, want_counts);
+            Image got(o.width, o.height);
+            const RenderStats stats = render(scene, o, got);
+            ASSERT_EQ(got.rgb, want.rgb);
+            EXPECT_EQ(stats.rays.camera, std::uint64_t(o.width) * o.height);
+            EXPECT_EQ(stats.rays.camera, want_counts.camera);
+            EXPECT_EQ(stats.rays.reflected, want_counts.reflected);
+            EXPECT_EQ(stats.rays.refracted, want_counts.refracted);
+            EXPECT_EQ(stats.rays.shadow, want_counts.shadow);
+        }
+}
+
+TEST(Renderer, PacketTracedCameraRaysChangeNoPixel) {
+    expect_packets_change_nothing(busy_scene(), "busy");
+    // The bundled showcase: every shape, light type, mirror, glass, instancing.
+    LoadResult showcase = load_scene(std::string(WHITTED_SOURCE_DIR) + "/scenes/showcase.sc");
+    ASSERT_TRUE(showcase.ok());
+    expect_packets_change_nothing(*showcase.scene, "showcase");
 }
 
 TEST(Renderer, CancelStopsAfterTheCurrentRowsAndLeavesTheRestBlack) {
