@@ -7,6 +7,7 @@
 // hit from what it visits. The extra boxes a lane is taken into only cost time.
 #include "accel/bvh_packet.h"
 
+#include <cstring>
 #include <limits>
 
 #if defined(__SSE2__) || defined(_M_X64)
@@ -25,7 +26,9 @@ using bvh_detail::kStackSize;
 constexpr int kGroups = kPacketSize / 4;  // SSE registers per packet quantity
 static_assert(kPacketSize % 4 == 0 && kPacketSize <= 32);
 
-// All-ones in the lanes whose bit is set: turns four bits of a lane mask into an SSE mask.
+inline int lowest_bit(unsigned mask) { return __builtin_ctz(mask); }
+
+// All-ones in the lanes whose bit is set: four bits of a lane mask as an SSE mask.
 struct LaneMasks {
     alignas(16) std::uint32_t m[16][4];
     constexpr LaneMasks() : m{} {
@@ -36,7 +39,184 @@ struct LaneMasks {
 constexpr LaneMasks kLaneMasks;
 inline __m128 lane_mask(unsigned bits) { return _mm_load_ps(reinterpret_cast<const float*>(kLaneMasks.m[bits & 15])); }
 
-inline int lowest_bit(unsigned mask) { return __builtin_ctz(mask); }
+// The packet's rays as the box test wants them, structure of arrays. Inactive lanes have a NaN
+// reciprocal direction: every comparison with their distances is false, so they enter no box.
+struct PacketRays {
+    __m128 o[3][kGroups], d[3][kGroups], inv[3][kGroups];
+    // When every lane's direction has the same sign per axis (most camera packets): the box rows
+    // of the near and far planes per axis, as in the single-ray test.
+    int near_row[3], far_row[3];
+    bool same_signs;
+    // When every lane starts at the same point (camera rays): box - origin is the same for all
+    // lanes, computed once per node for four children.
+    bool common_origin;
+    __m128 origin[3];  // broadcast
+
+    PacketRays(const Ray (&rays)[kPacketSize], unsigned active) {
+        const int first = __builtin_ctz(active);
+        alignas(16) float org[3][kPacketSize], dir[3][kPacketSize];
+        common_origin = true;
+        for (int l = 0; l < kPacketSize; ++l) {
+            const Ray& ray = ((active >> l) & 1) ? rays[l] : rays[first];  // any finite ray
+            common_origin = common_origin && std::memcmp(&ray.origin, &rays[first].origin, sizeof(ray.origin)) == 0;
+            for (int a = 0; a < 3; ++a) {
+                org[a][l] = ray.origin[a];
+                dir[a][l] = ray.direction[a];
+            }
+        }
+        same_signs = true;
+        const __m128 sign = _mm_set1_ps(-0.0f), tiny = _mm_set1_ps(1e-30f), one = _mm_set1_ps(1.0f);
+        const __m128 nan = _mm_set1_ps(std::numeric_limits<float>::quiet_NaN());
+        for (int a = 0; a < 3; ++a) {
+            origin[a] = _mm_set1_ps(rays[first].origin[a]);
+            unsigned negative = 0;
+            for (int g = 0; g < kGroups; ++g) {
+                o[a][g] = _mm_load_ps(&org[a][4 * g]);
+                d[a][g] = _mm_load_ps(&dir[a][4 * g]);
+                // bvh_detail::safe_reciprocal: 1 / (|d| > 1e-30 ? d : copysign(1e-30, d)).
+                const __m128 big = _mm_cmpgt_ps(_mm_andnot_ps(sign, d[a][g]), tiny);
+                const __m128 safe =
+                    _mm_or_ps(_mm_and_ps(big, d[a][g]), _mm_andnot_ps(big, _mm_or_ps(_mm_and_ps(sign, d[a][g]), tiny)));
+                const __m128 on = lane_mask(active >> (4 * g));
+                inv[a][g] = _mm_or_ps(_mm_and_ps(on, _mm_div_ps(one, safe)), _mm_andnot_ps(on, nan));
+                negative |= unsigned(_mm_movemask_ps(_mm_and_ps(on, inv[a][g]))) << (4 * g);
+            }
+            same_signs = same_signs && (negative == 0 || negative == active);
+            near_row[a] = negative != 0 ? 3 + a : a;
+            far_row[a] = negative != 0 ? a : 3 + a;
+        }
+    }
+};
+
+template <int c>
+inline __m128 broadcast(__m128 v) {
+    return _mm_shuffle_ps(v, v, _MM_SHUFFLE(c, c, c, c));
+}
+
+// The node's box planes as test_child wants them: rows[a] the near and rows[3 + a] the far
+// planes of axis a for the four children (kSameSigns; else the lo and hi rows), minus the
+// origin when all lanes share it.
+template <bool kSameSigns, bool kCommonOrigin>
+inline void load_planes(const Bvh4Node& n, const PacketRays& r, __m128 (&rows)[6]) {
+    for (int a = 0; a < 3; ++a) {
+        rows[a] = _mm_load_ps(n.box[kSameSigns ? r.near_row[a] : a]);
+        rows[3 + a] = _mm_load_ps(n.box[kSameSigns ? r.far_row[a] : 3 + a]);
+        if (kCommonOrigin) {
+            rows[a] = _mm_sub_ps(rows[a], r.origin[a]);
+            rows[3 + a] = _mm_sub_ps(rows[3 + a], r.origin[a]);
+        }
+    }
+}
+
+// Tests every lane against child slot c: returns the lanes that enter its box within
+// (t_min, limit) and stores their entry distances; `key` gets the smallest of those (+inf for
+// the others), to order the children. The arithmetic is the single-ray test's, lane by lane:
+// (plane - origin) · reciprocal; kSameSigns picks the planes by rows as it does, otherwise each
+// lane takes the nearer and farther of the two, which is the same for a finite box (unused
+// slots, +inf..-inf, must then be masked off by the caller).
+template <bool kSameSigns, bool kCommonOrigin, int c>
+inline unsigned test_child(const PacketRays& r, const __m128 (&rows)[6], const __m128 (&limit)[kGroups], __m128 tmin,
+                           float* enter_out, __m128& key) {
+    const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());
+    __m128 plane[6];
+    for (int k = 0; k < 6; ++k) plane[k] = broadcast<c>(rows[k]);
+    unsigned hit = 0;
+    key = inf;
+    for (int g = 0; g < kGroups; ++g) {
+        __m128 t_near[3], t_far[3];
+        for (int a = 0; a < 3; ++a) {
+            const __m128 rel0 = kCommonOrigin ? plane[a] : _mm_sub_ps(plane[a], r.o[a][g]);
+            const __m128 rel1 = kCommonOrigin ? plane[3 + a] : _mm_sub_ps(plane[3 + a], r.o[a][g]);
+            const __m128 t0 = _mm_mul_ps(rel0, r.inv[a][g]);
+            const __m128 t1 = _mm_mul_ps(rel1, r.inv[a][g]);
+            t_near[a] = kSameSigns ? t0 : _mm_min_ps(t0, t1);
+            t_far[a] = kSameSigns ? t1 : _mm_max_ps(t0, t1);
+        }
+        // As in the single-ray test; NaN (inactive lane) in, NaN out.
+        const __m128 enter = _mm_max_ps(_mm_max_ps(tmin, t_near[0]), _mm_max_ps(t_near[1], t_near[2]));
+        const __m128 leave = _mm_min_ps(_mm_min_ps(limit[g], t_far[0]), _mm_min_ps(t_far[1], t_far[2]));
+        const __m128 in = _mm_cmple_ps(enter, leave);
+        hit |= unsigned(_mm_movemask_ps(in)) << (4 * g);
+        _mm_store_ps(enter_out + 4 * g, enter);
+        key = _mm_min_ps(key, _mm_max_ps(enter, _mm_andnot_ps(in, inf)));
+    }
+    return hit;
+}
+
+inline float horizontal_min(__m128 v) {
+    v = _mm_min_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1)));
+    v = _mm_min_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 0, 3, 2)));
+    return _mm_cvtss_f32(v);
+}
+
+// Each lane's nearest hit so far (bvh_detail::offer_nearest's state).
+struct Nearest {
+    alignas(16) float best[kPacketSize];
+    std::uint32_t index[kPacketSize];
+    ShapePart part[kPacketSize];
+    bool found[kPacketSize];
+};
+
+// glm::dot's order of operations: (x·x' + y·y') + z·z'.
+inline __m128 dot3(__m128 ax, __m128 ay, __m128 az, __m128 bx, __m128 by, __m128 bz) {
+    return _mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, bx), _mm_mul_ps(ay, by)), _mm_mul_ps(az, bz));
+}
+
+// Offers sphere instance `index` to the four lanes of group g set in `lanes`: to_object_space,
+// shape_math::intersect_sphere and bvh_detail::offer_nearest evaluated in SSE lanes, operation
+// for operation (the same IEEE operations in the same order give the same bits; std::min(a, b)
+// is _mm_min_ps(b, a)). The packet tests check it against the single-ray path.
+inline void offer_sphere4(const Instance& inst, std::uint32_t index, const PacketRays& r, int g, unsigned lanes,
+                          __m128 tmin, __m128 tmax, Nearest& nearest) {
+    const glm::vec4* w = inst.world_to_object;
+    __m128 o[3], d[3];
+    for (int k = 0; k < 3; ++k) {
+        const __m128 wx = _mm_set1_ps(w[k].x), wy = _mm_set1_ps(w[k].y), wz = _mm_set1_ps(w[k].z);
+        o[k] = _mm_add_ps(dot3(wx, wy, wz, r.o[0][g], r.o[1][g], r.o[2][g]), _mm_set1_ps(w[k].w));
+        d[k] = dot3(wx, wy, wz, r.d[0][g], r.d[1][g], r.d[2][g]);
+    }
+    const __m128 quarter = _mm_set1_ps(0.25f);
+    const __m128 a = dot3(d[0], d[1], d[2], d[0], d[1], d[2]);
+    const __m128 hb = dot3(o[0], o[1], o[2], d[0], d[1], d[2]);
+    const __m128 s = _mm_div_ps(hb, a);
+    const __m128 lx = _mm_sub_ps(o[0], _mm_mul_ps(s, d[0]));
+    const __m128 ly = _mm_sub_ps(o[1], _mm_mul_ps(s, d[1]));
+    const __m128 lz = _mm_sub_ps(o[2], _mm_mul_ps(s, d[2]));
+    const __m128 disc = _mm_mul_ps(a, _mm_sub_ps(quarter, dot3(lx, ly, lz, lx, ly, lz)));
+    const __m128 meets = _mm_cmpge_ps(disc, _mm_setzero_ps());  // false for NaN, as !(disc >= 0)
+    if ((_mm_movemask_ps(meets) & int(lanes)) == 0) return;
+    const __m128 c = _mm_sub_ps(dot3(o[0], o[1], o[2], o[0], o[1], o[2]), quarter);
+    const __m128 sign = _mm_set1_ps(-0.0f);
+    const __m128 root = _mm_sqrt_ps(disc);
+    const __m128 q = _mm_xor_ps(_mm_add_ps(hb, _mm_or_ps(_mm_andnot_ps(sign, root), _mm_and_ps(sign, hb))), sign);
+    const __m128 r0 = _mm_div_ps(q, a);
+    const __m128 r1 = _mm_and_ps(_mm_cmpneq_ps(q, _mm_setzero_ps()), _mm_div_ps(c, q));
+    const __m128 t0 = _mm_min_ps(r1, r0), t1 = _mm_max_ps(r1, r0);
+    // finish(): t0 <= t1, both finite.
+    const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());
+    __m128 ok = _mm_and_ps(meets, _mm_cmple_ps(t0, t1));
+    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmplt_ps(_mm_andnot_ps(sign, t0), inf), _mm_cmplt_ps(_mm_andnot_ps(sign, t1), inf)));
+    // offer_nearest(): the first crossing beyond t_min, if before t_max.
+    const __m128 first = _mm_cmpgt_ps(t0, tmin);
+    const __m128 t = _mm_or_ps(_mm_and_ps(first, t0), _mm_andnot_ps(first, t1));
+    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpgt_ps(t, tmin), _mm_cmplt_ps(t, tmax)));
+    const __m128 best = _mm_load_ps(&nearest.best[4 * g]);
+    unsigned nearer = unsigned(_mm_movemask_ps(_mm_and_ps(ok, _mm_cmplt_ps(t, best)))) & lanes;
+    unsigned tie = unsigned(_mm_movemask_ps(_mm_and_ps(ok, _mm_cmpeq_ps(t, best)))) & lanes;
+    alignas(16) float tt[4];
+    _mm_store_ps(tt, t);
+    for (; tie != 0; tie &= tie - 1) {  // equal distances: the lowest index
+        const int l = 4 * g + lowest_bit(tie);
+        if (nearest.found[l] && index < nearest.index[l]) nearer |= 1u << (l - 4 * g);
+    }
+    for (; nearer != 0; nearer &= nearer - 1) {
+        const int k = lowest_bit(nearer), l = 4 * g + k;
+        nearest.best[l] = tt[k];
+        nearest.index[l] = index;
+        nearest.part[l] = kPartSide;
+        nearest.found[l] = true;
+    }
+}
 
 // A box waiting on the stack, with the lanes that entered it and their entry distances (a lane
 // whose nearest hit has meanwhile come closer than its entry is dropped when it is popped).
@@ -46,54 +226,21 @@ struct alignas(16) Entry {
     unsigned mask;
 };
 
-// A child box that lanes entered, for ordering: key = the smallest entry distance among them.
-struct Candidate {
-    float key;
-    int slot;
-    unsigned mask;
-};
-
-}  // namespace
-
-unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& instances,
-                                  const Ray (&rays)[kPacketSize], unsigned active, float t_min, float t_max,
-                                  Hit (&hits)[kPacketSize]) {
-    active &= (kPacketSize == 32 ? ~0u : (1u << kPacketSize) - 1);
-    if (bvh.nodes.empty() || active == 0) return 0;
+template <bool kSameSigns, bool kCommonOrigin>
+unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const Ray (&rays)[kPacketSize],
+                  const PacketRays& r, unsigned active, float t_min, float t_max, Hit (&hits)[kPacketSize]) {
     const Bvh4Node* nodes = bvh.nodes.data();
     const Instance* inst = instances.data();
-
-    // The rays' origins and reciprocal directions, structure of arrays. Inactive lanes get a
-    // harmless ray; their mask bits are never set, so they are never visited.
-    __m128 org[3][kGroups], inv[3][kGroups];
-    {
-        alignas(16) float o[3][kPacketSize], r[3][kPacketSize];
-        for (int l = 0; l < kPacketSize; ++l) {
-            const bool on = (active >> l) & 1;
-            for (int a = 0; a < 3; ++a) {
-                o[a][l] = on ? rays[l].origin[a] : 0.0f;
-                r[a][l] = on ? bvh_detail::safe_reciprocal(rays[l].direction[a]) : 1.0f;
-            }
-        }
-        for (int a = 0; a < 3; ++a)
-            for (int g = 0; g < kGroups; ++g) {
-                org[a][g] = _mm_load_ps(&o[a][4 * g]);
-                inv[a][g] = _mm_load_ps(&r[a][4 * g]);
-            }
-    }
     const __m128 tmin = _mm_set1_ps(t_min);
-    const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());
 
-    // Each lane's nearest hit so far (bvh_detail::offer_nearest's state).
-    alignas(16) float best[kPacketSize];
-    std::uint32_t best_index[kPacketSize];
-    ShapePart best_part[kPacketSize];
-    bool found[kPacketSize];
+    const __m128 tmax = _mm_set1_ps(t_max);
+    Nearest nearest;
+    float* best = nearest.best;
     for (int l = 0; l < kPacketSize; ++l) {
         best[l] = t_max;
-        best_index[l] = 0;
-        best_part[l] = kPartSide;
-        found[l] = false;
+        nearest.index[l] = 0;
+        nearest.part[l] = kPartSide;
+        nearest.found[l] = false;
     }
 
     Entry stack[kStackSize];
@@ -103,79 +250,80 @@ unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& i
     for (;;) {
         if (!Bvh4Node::is_leaf(ref)) {
             const Bvh4Node& n = nodes[ref];
-            __m128 near_limit[kGroups];
-            for (int g = 0; g < kGroups; ++g) near_limit[g] = _mm_load_ps(&best[4 * g]);
-            // Unused slots have lo = +inf > hi = -inf; the min/max below would turn them into
-            // boxes of infinite extent, so they are skipped here instead.
-            const int used = _mm_movemask_ps(_mm_cmple_ps(_mm_load_ps(n.box[0]), _mm_load_ps(n.box[3])));
+            __m128 limit[kGroups];
+            for (int g = 0; g < kGroups; ++g) limit[g] = _mm_load_ps(&best[4 * g]);
+            // All four children without a branch between them: four independent chains.
             alignas(16) float enter_t[4][kPacketSize];
-            Candidate cand[4];
-            int count = 0;
-            for (int c = 0; c < 4; ++c) {
-                if (!((used >> c) & 1)) continue;
-                __m128 lo[3], hi[3];
-                for (int a = 0; a < 3; ++a) {
-                    lo[a] = _mm_set1_ps(n.box[a][c]);
-                    hi[a] = _mm_set1_ps(n.box[3 + a][c]);
-                }
-                unsigned hit = 0;
-                __m128 key = inf;
-                for (int g = 0; g < kGroups; ++g) {
-                    // Per lane the near plane is the nearer of the two: for a finite box this
-                    // is exactly the single-ray test's sign-selected plane.
-                    __m128 enter = tmin, leave = near_limit[g];
-                    for (int a = 0; a < 3; ++a) {
-                        const __m128 t0 = _mm_mul_ps(_mm_sub_ps(lo[a], org[a][g]), inv[a][g]);
-                        const __m128 t1 = _mm_mul_ps(_mm_sub_ps(hi[a], org[a][g]), inv[a][g]);
-                        enter = _mm_max_ps(enter, _mm_min_ps(t0, t1));
-                        leave = _mm_min_ps(leave, _mm_max_ps(t0, t1));
-                    }
-                    const __m128 in = _mm_and_ps(_mm_cmple_ps(enter, leave), lane_mask(mask >> (4 * g)));
-                    hit |= unsigned(_mm_movemask_ps(in)) << (4 * g);
-                    _mm_store_ps(&enter_t[c][4 * g], enter);
-                    key = _mm_min_ps(key, _mm_or_ps(_mm_and_ps(in, enter), _mm_andnot_ps(in, inf)));
-                }
-                if (hit == 0) continue;
-                key = _mm_min_ps(key, _mm_shuffle_ps(key, key, _MM_SHUFFLE(2, 3, 0, 1)));
-                key = _mm_min_ps(key, _mm_shuffle_ps(key, key, _MM_SHUFFLE(1, 0, 3, 2)));
-                // Insert, farthest first.
-                const Candidate e{_mm_cvtss_f32(key), c, hit};
-                int k = count++;
-                while (k > 0 && cand[k - 1].key < e.key) {
-                    cand[k] = cand[k - 1];
-                    --k;
-                }
-                cand[k] = e;
+            __m128 key[4];
+            unsigned hit[4];
+            __m128 rows[6];
+            load_planes<kSameSigns, kCommonOrigin>(n, r, rows);
+            hit[0] = test_child<kSameSigns, kCommonOrigin, 0>(r, rows, limit, tmin, enter_t[0], key[0]);
+            hit[1] = test_child<kSameSigns, kCommonOrigin, 1>(r, rows, limit, tmin, enter_t[1], key[1]);
+            hit[2] = test_child<kSameSigns, kCommonOrigin, 2>(r, rows, limit, tmin, enter_t[2], key[2]);
+            hit[3] = test_child<kSameSigns, kCommonOrigin, 3>(r, rows, limit, tmin, enter_t[3], key[3]);
+            if (!kSameSigns) {
+                // Unused slots have lo = +inf > hi = -inf, which min/max made infinite boxes.
+                const int used = _mm_movemask_ps(_mm_cmple_ps(_mm_load_ps(n.box[0]), _mm_load_ps(n.box[3])));
+                for (int c = 0; c < 4; ++c) hit[c] &= 0u - unsigned((used >> c) & 1);
             }
-            if (count != 0) {
-                // Push all but the nearest, go on with the nearest.
+            const unsigned children = unsigned(hit[0] != 0) | unsigned(hit[1] != 0) << 1 |
+                                      unsigned(hit[2] != 0) << 2 | unsigned(hit[3] != 0) << 3;
+            if (children != 0) {
+                int c = lowest_bit(children);
+                if ((children & (children - 1)) == 0) {  // one child: go straight on
+                    ref = n.child[c];
+                    mask = hit[c];
+                    continue;
+                }
+                // Several: push all but the nearest (by the smallest entry of its lanes),
+                // farthest first.
+                struct Candidate { float key; int slot; } cand[4];
+                int count = 0;
+                for (unsigned rest = children; rest != 0; rest &= rest - 1) {
+                    c = lowest_bit(rest);
+                    const Candidate e{horizontal_min(key[c]), c};
+                    int k = count++;
+                    while (k > 0 && cand[k - 1].key < e.key) {
+                        cand[k] = cand[k - 1];
+                        --k;
+                    }
+                    cand[k] = e;
+                }
                 for (int k = 0; k < count - 1; ++k) {
                     Entry& e = stack[top++];
-                    for (int g = 0; g < kGroups; ++g)
-                        _mm_store_ps(&e.t[4 * g], _mm_load_ps(&enter_t[cand[k].slot][4 * g]));
-                    e.ref = n.child[cand[k].slot];
-                    e.mask = cand[k].mask;
+                    const int slot = cand[k].slot;
+                    for (int g = 0; g < kGroups; ++g) _mm_store_ps(&e.t[4 * g], _mm_load_ps(&enter_t[slot][4 * g]));
+                    e.ref = n.child[slot];
+                    e.mask = hit[slot];
                 }
                 ref = n.child[cand[count - 1].slot];
-                mask = cand[count - 1].mask;
+                mask = hit[cand[count - 1].slot];
                 continue;
             }
         } else {
             const std::uint32_t first = Bvh4Node::leaf_first(ref), end = first + Bvh4Node::leaf_count(ref);
-            for (std::uint32_t i = first; i < end; ++i)
+            for (std::uint32_t i = first; i < end; ++i) {
+                if (inst[i].kind == ShapeKind::Sphere) {
+                    for (int g = 0; g < kGroups; ++g)
+                        if (const unsigned lanes = (mask >> (4 * g)) & 15u)
+                            offer_sphere4(inst[i], i, r, g, lanes, tmin, tmax, nearest);
+                    continue;
+                }
                 for (unsigned m = mask; m != 0; m &= m - 1) {
                     const int l = lowest_bit(m);
                     bvh_detail::offer_nearest(bvh_detail::intersect_instance(inst[i], rays[l]), i, t_min, t_max,
-                                              best[l], best_index[l], best_part[l], found[l]);
+                                              best[l], nearest.index[l], nearest.part[l], nearest.found[l]);
                 }
+            }
         }
         // Pop, dropping the lanes whose nearest hit is now closer than their entry into the box.
         for (;;) {
             if (top == 0) {
                 unsigned result = 0;
                 for (int l = 0; l < kPacketSize; ++l)
-                    if (found[l]) {
-                        hits[l] = {best[l], best_index[l], best_part[l]};
+                    if (nearest.found[l]) {
+                        hits[l] = {best[l], nearest.index[l], nearest.part[l]};
                         result |= 1u << l;
                     }
                 return result;
@@ -193,6 +341,21 @@ unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& i
             }
         }
     }
+}
+
+}  // namespace
+
+unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& instances,
+                                  const Ray (&rays)[kPacketSize], unsigned active, float t_min, float t_max,
+                                  Hit (&hits)[kPacketSize]) {
+    active &= (kPacketSize == 32 ? ~0u : (1u << kPacketSize) - 1);
+    if (bvh.nodes.empty() || active == 0) return 0;
+    const PacketRays r(rays, active);
+    if (r.common_origin)
+        return r.same_signs ? traverse<true, true>(bvh, instances, rays, r, active, t_min, t_max, hits)
+                            : traverse<false, true>(bvh, instances, rays, r, active, t_min, t_max, hits);
+    return r.same_signs ? traverse<true, false>(bvh, instances, rays, r, active, t_min, t_max, hits)
+                        : traverse<false, false>(bvh, instances, rays, r, active, t_min, t_max, hits);
 }
 
 #else

@@ -18,8 +18,12 @@ constexpr int kStackSize = 3 * 96;
 // exactly in a slab plane gives 0·huge = 0 rather than 0·inf = NaN.
 inline float safe_reciprocal(float d) { return 1.0f / (std::fabs(d) > 1e-30f ? d : std::copysign(1e-30f, d)); }
 
+// Forced inline: shared by two files, GCC would otherwise call these out of line from the
+// single-ray traversal (one call per instance test).
+#define WHITTED_BVH_INLINE [[gnu::always_inline]] inline
+
 // The object-space interval of instance `inst` along the world ray.
-inline shape_math::Span<float> intersect_instance(const Instance& inst, const Ray& ray) {
+WHITTED_BVH_INLINE shape_math::Span<float> intersect_instance(const Instance& inst, const Ray& ray) {
     const Ray o = to_object_space(inst, ray);
     return shape_math::intersect<float>(inst.kind, o.origin, o.direction);
 }
@@ -27,7 +31,7 @@ inline shape_math::Span<float> intersect_instance(const Instance& inst, const Ra
 // Offers instance `index`'s interval `s` to a ray's nearest hit so far (best, best_index,
 // best_part, found; best starts at t_max). The nearest crossing in (t_min, t_max) wins; of equal
 // distances the lowest index, as in the brute-force loop, so the visiting order never matters.
-inline void offer_nearest(const shape_math::Span<float>& s, std::uint32_t index, float t_min, float t_max, float& best,
+WHITTED_BVH_INLINE void offer_nearest(const shape_math::Span<float>& s, std::uint32_t index, float t_min, float t_max, float& best,
                           std::uint32_t& best_index, ShapePart& best_part, bool& found) {
     if (s.count == 0) return;
     const int k = s.t[0] > t_min ? 0 : 1;

@@ -137,6 +137,32 @@ TEST(BvhPacket, IncoherentPacketsMatchSingleRays) {
     }
 }
 
+TEST(BvhPacket, ParallelRaysFromDifferentOrigins) {
+    // Same direction, origins a small grid apart (an orthographic camera): the packet's
+    // directions agree in sign, its origins differ; also directions with zero components.
+    RandomScene scene = random_scene(10, 500, 10.0f);
+    Bvh bvh = build_bvh(scene.instances);
+    std::mt19937 rng(10);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    int hits = 0, lanes = 0;
+    for (int k = 0; k < 1500; ++k) {
+        glm::vec3 dir = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
+        if (k % 10 == 1) dir = {0, 0, -1};
+        if (k % 10 == 2) dir = glm::normalize(glm::vec3(1, -1, 0));
+        const glm::vec3 side = glm::normalize(glm::cross(dir, glm::vec3(0.3f, 1, 0.1f)));
+        const glm::vec3 up = glm::cross(side, dir);
+        const glm::vec3 start = 12.0f * glm::vec3(u(rng), u(rng), u(rng)) - 15.0f * dir;
+        const float spacing = k % 3 == 0 ? 0.01f : 0.3f;
+        Packet p;
+        for (int l = 0; l < kPacketSize; ++l)
+            p.rays[l] = Ray{start + spacing * (float(l % 4) * side + float(l / 4) * up), dir};
+        hits += expect_same_as_single_rays(bvh, scene.instances, p, 0.0f, kInf, k);
+        lanes += kPacketSize;
+        if (HasFailure()) return;
+    }
+    EXPECT_GT(hits, lanes / 5);
+}
+
 TEST(BvhPacket, LanesMissingEverythingAndInactiveLanes) {
     RandomScene scene = random_scene(8, 400, 10.0f);
     Bvh bvh = build_bvh(scene.instances);
