@@ -15,6 +15,7 @@
 #define WHITTED_BVH_SSE 1
 #endif
 
+#include "accel/bvh_packet_shapes.h"
 #include "accel/bvh_ray.h"
 
 namespace whitted {
@@ -42,7 +43,8 @@ inline __m128 lane_mask(unsigned bits) { return _mm_load_ps(reinterpret_cast<con
 // The packet's rays as the box test wants them, structure of arrays. Inactive lanes have a NaN
 // reciprocal direction: every comparison with their distances is false, so they enter no box.
 struct PacketRays {
-    __m128 o[3][kGroups], d[3][kGroups], inv[3][kGroups];
+    __m128 o[kGroups][3], d[kGroups][3];  // per group of four lanes: x, y, z
+    __m128 inv[3][kGroups];
     // When every lane's direction has the same sign per axis (most camera packets): the box rows
     // of the near and far planes per axis, as in the single-ray test.
     int near_row[3], far_row[3];
@@ -54,15 +56,11 @@ struct PacketRays {
 
     PacketRays(const Ray (&rays)[kPacketSize], unsigned active) {
         const int first = __builtin_ctz(active);
-        alignas(16) float org[3][kPacketSize], dir[3][kPacketSize];
+        const Ray* lane[kPacketSize];
         common_origin = true;
         for (int l = 0; l < kPacketSize; ++l) {
-            const Ray& ray = ((active >> l) & 1) ? rays[l] : rays[first];  // any finite ray
-            common_origin = common_origin && std::memcmp(&ray.origin, &rays[first].origin, sizeof(ray.origin)) == 0;
-            for (int a = 0; a < 3; ++a) {
-                org[a][l] = ray.origin[a];
-                dir[a][l] = ray.direction[a];
-            }
+            lane[l] = ((active >> l) & 1) ? &rays[l] : &rays[first];  // inactive: any finite ray
+            common_origin = common_origin && std::memcmp(&lane[l]->origin, &rays[first].origin, sizeof(Ray::origin)) == 0;
         }
         same_signs = true;
         const __m128 sign = _mm_set1_ps(-0.0f), tiny = _mm_set1_ps(1e-30f), one = _mm_set1_ps(1.0f);
@@ -71,12 +69,14 @@ struct PacketRays {
             origin[a] = _mm_set1_ps(rays[first].origin[a]);
             unsigned negative = 0;
             for (int g = 0; g < kGroups; ++g) {
-                o[a][g] = _mm_load_ps(&org[a][4 * g]);
-                d[a][g] = _mm_load_ps(&dir[a][4 * g]);
+                // Built in registers: four scalar stores then a vector load would stall.
+                const Ray* const* q = &lane[4 * g];
+                o[g][a] = _mm_setr_ps(q[0]->origin[a], q[1]->origin[a], q[2]->origin[a], q[3]->origin[a]);
+                d[g][a] = _mm_setr_ps(q[0]->direction[a], q[1]->direction[a], q[2]->direction[a], q[3]->direction[a]);
                 // bvh_detail::safe_reciprocal: 1 / (|d| > 1e-30 ? d : copysign(1e-30, d)).
-                const __m128 big = _mm_cmpgt_ps(_mm_andnot_ps(sign, d[a][g]), tiny);
+                const __m128 big = _mm_cmpgt_ps(_mm_andnot_ps(sign, d[g][a]), tiny);
                 const __m128 safe =
-                    _mm_or_ps(_mm_and_ps(big, d[a][g]), _mm_andnot_ps(big, _mm_or_ps(_mm_and_ps(sign, d[a][g]), tiny)));
+                    _mm_or_ps(_mm_and_ps(big, d[g][a]), _mm_andnot_ps(big, _mm_or_ps(_mm_and_ps(sign, d[g][a]), tiny)));
                 const __m128 on = lane_mask(active >> (4 * g));
                 inv[a][g] = _mm_or_ps(_mm_and_ps(on, _mm_div_ps(one, safe)), _mm_andnot_ps(on, nan));
                 negative |= unsigned(_mm_movemask_ps(_mm_and_ps(on, inv[a][g]))) << (4 * g);
@@ -125,8 +125,8 @@ inline unsigned test_child(const PacketRays& r, const __m128 (&rows)[6], const _
     for (int g = 0; g < kGroups; ++g) {
         __m128 t_near[3], t_far[3];
         for (int a = 0; a < 3; ++a) {
-            const __m128 rel0 = kCommonOrigin ? plane[a] : _mm_sub_ps(plane[a], r.o[a][g]);
-            const __m128 rel1 = kCommonOrigin ? plane[3 + a] : _mm_sub_ps(plane[3 + a], r.o[a][g]);
+            const __m128 rel0 = kCommonOrigin ? plane[a] : _mm_sub_ps(plane[a], r.o[g][a]);
+            const __m128 rel1 = kCommonOrigin ? plane[3 + a] : _mm_sub_ps(plane[3 + a], r.o[g][a]);
             const __m128 t0 = _mm_mul_ps(rel0, r.inv[a][g]);
             const __m128 t1 = _mm_mul_ps(rel1, r.inv[a][g]);
             t_near[a] = kSameSigns ? t0 : _mm_min_ps(t0, t1);
@@ -157,64 +157,61 @@ struct Nearest {
     bool found[kPacketSize];
 };
 
-// glm::dot's order of operations: (x·x' + y·y') + z·z'.
-inline __m128 dot3(__m128 ax, __m128 ay, __m128 az, __m128 bx, __m128 by, __m128 bz) {
-    return _mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, bx), _mm_mul_ps(ay, by)), _mm_mul_ps(az, bz));
-}
-
-// Offers sphere instance `index` to the four lanes of group g set in `lanes`: to_object_space,
-// shape_math::intersect_sphere and bvh_detail::offer_nearest evaluated in SSE lanes, operation
-// for operation (the same IEEE operations in the same order give the same bits; std::min(a, b)
-// is _mm_min_ps(b, a)). The packet tests check it against the single-ray path.
-inline void offer_sphere4(const Instance& inst, std::uint32_t index, const PacketRays& r, int g, unsigned lanes,
-                          __m128 tmin, __m128 tmax, Nearest& nearest) {
-    const glm::vec4* w = inst.world_to_object;
-    __m128 o[3], d[3];
-    for (int k = 0; k < 3; ++k) {
-        const __m128 wx = _mm_set1_ps(w[k].x), wy = _mm_set1_ps(w[k].y), wz = _mm_set1_ps(w[k].z);
-        o[k] = _mm_add_ps(dot3(wx, wy, wz, r.o[0][g], r.o[1][g], r.o[2][g]), _mm_set1_ps(w[k].w));
-        d[k] = dot3(wx, wy, wz, r.d[0][g], r.d[1][g], r.d[2][g]);
-    }
-    const __m128 quarter = _mm_set1_ps(0.25f);
-    const __m128 a = dot3(d[0], d[1], d[2], d[0], d[1], d[2]);
-    const __m128 hb = dot3(o[0], o[1], o[2], d[0], d[1], d[2]);
-    const __m128 s = _mm_div_ps(hb, a);
-    const __m128 lx = _mm_sub_ps(o[0], _mm_mul_ps(s, d[0]));
-    const __m128 ly = _mm_sub_ps(o[1], _mm_mul_ps(s, d[1]));
-    const __m128 lz = _mm_sub_ps(o[2], _mm_mul_ps(s, d[2]));
-    const __m128 disc = _mm_mul_ps(a, _mm_sub_ps(quarter, dot3(lx, ly, lz, lx, ly, lz)));
-    const __m128 meets = _mm_cmpge_ps(disc, _mm_setzero_ps());  // false for NaN, as !(disc >= 0)
-    if ((_mm_movemask_ps(meets) & int(lanes)) == 0) return;
-    const __m128 c = _mm_sub_ps(dot3(o[0], o[1], o[2], o[0], o[1], o[2]), quarter);
-    const __m128 sign = _mm_set1_ps(-0.0f);
-    const __m128 root = _mm_sqrt_ps(disc);
-    const __m128 q = _mm_xor_ps(_mm_add_ps(hb, _mm_or_ps(_mm_andnot_ps(sign, root), _mm_and_ps(sign, hb))), sign);
-    const __m128 r0 = _mm_div_ps(q, a);
-    const __m128 r1 = _mm_and_ps(_mm_cmpneq_ps(q, _mm_setzero_ps()), _mm_div_ps(c, q));
-    const __m128 t0 = _mm_min_ps(r1, r0), t1 = _mm_max_ps(r1, r0);
-    // finish(): t0 <= t1, both finite.
-    const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());
-    __m128 ok = _mm_and_ps(meets, _mm_cmple_ps(t0, t1));
-    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmplt_ps(_mm_andnot_ps(sign, t0), inf), _mm_cmplt_ps(_mm_andnot_ps(sign, t1), inf)));
-    // offer_nearest(): the first crossing beyond t_min, if before t_max.
-    const __m128 first = _mm_cmpgt_ps(t0, tmin);
-    const __m128 t = _mm_or_ps(_mm_and_ps(first, t0), _mm_andnot_ps(first, t1));
-    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpgt_ps(t, tmin), _mm_cmplt_ps(t, tmax)));
+// bvh_detail::offer_nearest for the lanes of group g set in `lanes`, given their intervals
+// along instance `index`.
+inline void offer4(const packet_shapes::Span4& s, std::uint32_t index, int g, unsigned lanes, __m128 tmin, __m128 tmax,
+                   Nearest& nearest) {
+    using packet_shapes::select;
+    // The first crossing beyond t_min, if before t_max.
+    const __m128 first = _mm_cmpgt_ps(s.t0, tmin);
+    const __m128 t = select(first, s.t0, s.t1);
+    const __m128 ok = _mm_and_ps(s.ok, _mm_and_ps(_mm_cmpgt_ps(t, tmin), _mm_cmplt_ps(t, tmax)));
     const __m128 best = _mm_load_ps(&nearest.best[4 * g]);
     unsigned nearer = unsigned(_mm_movemask_ps(_mm_and_ps(ok, _mm_cmplt_ps(t, best)))) & lanes;
     unsigned tie = unsigned(_mm_movemask_ps(_mm_and_ps(ok, _mm_cmpeq_ps(t, best)))) & lanes;
-    alignas(16) float tt[4];
-    _mm_store_ps(tt, t);
     for (; tie != 0; tie &= tie - 1) {  // equal distances: the lowest index
         const int l = 4 * g + lowest_bit(tie);
         if (nearest.found[l] && index < nearest.index[l]) nearer |= 1u << (l - 4 * g);
     }
+    if (nearer == 0) return;
+    // One vector store: the next box test loads `best` as a vector, which would stall after
+    // scalar stores.
+    const __m128 take = lane_mask(nearer);
+    _mm_store_ps(&nearest.best[4 * g], select(take, t, best));
+    alignas(16) std::int32_t parts[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(parts), select(first, s.part0, s.part1));
     for (; nearer != 0; nearer &= nearer - 1) {
         const int k = lowest_bit(nearer), l = 4 * g + k;
-        nearest.best[l] = tt[k];
         nearest.index[l] = index;
-        nearest.part[l] = kPartSide;
+        nearest.part[l] = ShapePart(parts[k]);
         nearest.found[l] = true;
+    }
+}
+
+// Offers instance `index` to the lanes in `mask`: four lanes at a time for the shapes that
+// bvh_packet_shapes.h has, one lane at a time (bvh_ray.h) for the cone.
+inline void offer_instance(const Instance& inst, std::uint32_t index, const Ray (&rays)[kPacketSize],
+                           const PacketRays& r, unsigned mask, float t_min, float t_max, __m128 tmin, __m128 tmax,
+                           Nearest& nearest) {
+    if (inst.kind == ShapeKind::Cone) {
+        for (unsigned m = mask; m != 0; m &= m - 1) {
+            const int l = lowest_bit(m);
+            bvh_detail::offer_nearest(bvh_detail::intersect_instance(inst, rays[l]), index, t_min, t_max,
+                                      nearest.best[l], nearest.index[l], nearest.part[l], nearest.found[l]);
+        }
+        return;
+    }
+    for (int g = 0; g < kGroups; ++g) {
+        const unsigned lanes = (mask >> (4 * g)) & 15u;
+        if (lanes == 0) continue;
+        __m128 o[3], d[3];
+        packet_shapes::to_object_space4(inst, r.o[g], r.d[g], o, d);
+        switch (inst.kind) {
+            case ShapeKind::Sphere: offer4(packet_shapes::sphere4(o, d, int(lanes)), index, g, lanes, tmin, tmax, nearest); break;
+            case ShapeKind::Cube: offer4(packet_shapes::cube4(o, d), index, g, lanes, tmin, tmax, nearest); break;
+            case ShapeKind::Cylinder: offer4(packet_shapes::cylinder4(o, d), index, g, lanes, tmin, tmax, nearest); break;
+            case ShapeKind::Cone: break;
+        }
     }
 }
 
@@ -303,19 +300,8 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
             }
         } else {
             const std::uint32_t first = Bvh4Node::leaf_first(ref), end = first + Bvh4Node::leaf_count(ref);
-            for (std::uint32_t i = first; i < end; ++i) {
-                if (inst[i].kind == ShapeKind::Sphere) {
-                    for (int g = 0; g < kGroups; ++g)
-                        if (const unsigned lanes = (mask >> (4 * g)) & 15u)
-                            offer_sphere4(inst[i], i, r, g, lanes, tmin, tmax, nearest);
-                    continue;
-                }
-                for (unsigned m = mask; m != 0; m &= m - 1) {
-                    const int l = lowest_bit(m);
-                    bvh_detail::offer_nearest(bvh_detail::intersect_instance(inst[i], rays[l]), i, t_min, t_max,
-                                              best[l], nearest.index[l], nearest.part[l], nearest.found[l]);
-                }
-            }
+            for (std::uint32_t i = first; i < end; ++i)
+                offer_instance(inst[i], i, rays, r, mask, t_min, t_max, tmin, tmax, nearest);
         }
         // Pop, dropping the lanes whose nearest hit is now closer than their entry into the box.
         for (;;) {
