@@ -1,10 +1,13 @@
-// Packet traversal of the 4-wide BVH. The SIMD lanes are rays: at a node, each of the four child
-// boxes is tested against all the packet's rays at once (two SSE registers of four rays), and a
-// child is visited if any lane still wanting it enters it no farther than that lane's nearest hit
-// so far. Every lane keeps its own nearest hit, and its box test is the single-ray test
-// (bvh_traverse.cpp) evaluated in another lane, so a lane visits every box its single ray
-// would have to visit to find its answer, and the shared leaf code (bvh_ray.h) picks the same
-// hit from what it visits. The extra boxes a lane is taken into only cost time.
+// Packet traversal of the 4-wide BVH. The SIMD lanes are rays: at a node, each child box is
+// tested against all the packet's rays at once (four SSE registers of four rays), and a child is
+// visited if any lane still wanting it enters it no farther than that lane's nearest hit so far.
+// Every lane keeps its own nearest hit, and its box test is the single-ray test
+// (bvh_traverse.cpp) evaluated in another lane, so a lane visits every box its single ray would
+// have to visit to find its answer; the leaves compute the same intervals as the single-ray code
+// (bvh_ray.h, bvh_packet_shapes.h) and keep the same nearest hit of what they see. The extra
+// boxes a lane is taken into only cost time.
+// Camera packets (one origin, one direction sign per axis) first cull the node's children with
+// one test for the whole packet (frustum_slots), then test the lanes on the children left.
 #include "accel/bvh_packet.h"
 
 #include <cstring>
@@ -53,6 +56,8 @@ struct PacketRays {
     // lanes, computed once per node for four children.
     bool common_origin;
     __m128 origin[3];  // broadcast
+    // The smallest and largest reciprocal direction per axis over the active lanes (broadcast).
+    __m128 inv_lo[3], inv_hi[3];
 
     PacketRays(const Ray (&rays)[kPacketSize], unsigned active) {
         const int first = __builtin_ctz(active);
@@ -78,9 +83,16 @@ struct PacketRays {
                 const __m128 safe =
                     _mm_or_ps(_mm_and_ps(big, d[g][a]), _mm_andnot_ps(big, _mm_or_ps(_mm_and_ps(sign, d[g][a]), tiny)));
                 const __m128 on = lane_mask(active >> (4 * g));
-                inv[a][g] = _mm_or_ps(_mm_and_ps(on, _mm_div_ps(one, safe)), _mm_andnot_ps(on, nan));
+                const __m128 rcp = _mm_div_ps(one, safe);  // inactive lanes: an active lane's
+                inv_lo[a] = g == 0 ? rcp : _mm_min_ps(inv_lo[a], rcp);
+                inv_hi[a] = g == 0 ? rcp : _mm_max_ps(inv_hi[a], rcp);
+                inv[a][g] = _mm_or_ps(_mm_and_ps(on, rcp), _mm_andnot_ps(on, nan));
                 negative |= unsigned(_mm_movemask_ps(_mm_and_ps(on, inv[a][g]))) << (4 * g);
             }
+            inv_lo[a] = _mm_min_ps(inv_lo[a], _mm_shuffle_ps(inv_lo[a], inv_lo[a], _MM_SHUFFLE(2, 3, 0, 1)));
+            inv_lo[a] = _mm_min_ps(inv_lo[a], _mm_shuffle_ps(inv_lo[a], inv_lo[a], _MM_SHUFFLE(1, 0, 3, 2)));
+            inv_hi[a] = _mm_max_ps(inv_hi[a], _mm_shuffle_ps(inv_hi[a], inv_hi[a], _MM_SHUFFLE(2, 3, 0, 1)));
+            inv_hi[a] = _mm_max_ps(inv_hi[a], _mm_shuffle_ps(inv_hi[a], inv_hi[a], _MM_SHUFFLE(1, 0, 3, 2)));
             same_signs = same_signs && (negative == 0 || negative == active);
             near_row[a] = negative != 0 ? 3 + a : a;
             far_row[a] = negative != 0 ? a : 3 + a;
@@ -108,18 +120,16 @@ inline void load_planes(const Bvh4Node& n, const PacketRays& r, __m128 (&rows)[6
     }
 }
 
-// Tests every lane against child slot c: returns the lanes that enter its box within
-// (t_min, limit) and stores their entry distances; `key` gets the smallest of those (+inf for
-// the others), to order the children. The arithmetic is the single-ray test's, lane by lane:
-// (plane - origin) · reciprocal; kSameSigns picks the planes by rows as it does, otherwise each
-// lane takes the nearer and farther of the two, which is the same for a finite box (unused
-// slots, +inf..-inf, must then be masked off by the caller).
-template <bool kSameSigns, bool kCommonOrigin, int c>
-inline unsigned test_child(const PacketRays& r, const __m128 (&rows)[6], const __m128 (&limit)[kGroups], __m128 tmin,
+// Tests every lane against one child box, given its planes (broadcast; test_child_planes):
+// returns the lanes that enter the box within (t_min, limit) and stores their entry distances;
+// `key` gets the smallest of those (+inf for the others), to order the children. The arithmetic
+// is the single-ray test's, lane by lane: (plane - origin) · reciprocal; kSameSigns picks the
+// planes by rows as it does, otherwise each lane takes the nearer and farther of the two, which
+// is the same for a finite box (unused slots, +inf..-inf, must then be masked off by the caller).
+template <bool kSameSigns, bool kCommonOrigin>
+inline unsigned test_child(const PacketRays& r, const __m128 (&plane)[6], const __m128 (&limit)[kGroups], __m128 tmin,
                            float* enter_out, __m128& key) {
     const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());
-    __m128 plane[6];
-    for (int k = 0; k < 6; ++k) plane[k] = broadcast<c>(rows[k]);
     unsigned hit = 0;
     key = inf;
     for (int g = 0; g < kGroups; ++g) {
@@ -141,6 +151,31 @@ inline unsigned test_child(const PacketRays& r, const __m128 (&rows)[6], const _
         key = _mm_min_ps(key, _mm_max_ps(enter, _mm_andnot_ps(in, inf)));
     }
     return hit;
+}
+
+// test_child for slot c, its planes taken from the node's rows with register shuffles.
+template <bool kSameSigns, bool kCommonOrigin, int c>
+inline unsigned test_slot(const PacketRays& r, const __m128 (&rows)[6], const __m128 (&limit)[kGroups], __m128 tmin,
+                          float* enter_out, __m128& key) {
+    __m128 plane[6];
+    for (int k = 0; k < 6; ++k) plane[k] = broadcast<c>(rows[k]);
+    return test_child<kSameSigns, kCommonOrigin>(r, plane, limit, tmin, enter_out, key);
+}
+
+// For packets with one origin and one sign per axis: the slots whose boxes some lane may enter,
+// from the whole packet at once (interval arithmetic over the lanes). With the origin shared,
+// a lane's plane distance is rel · inv_l for the same rel, and rounding is monotonic, so the
+// smallest over the lanes is rel · (smallest or largest inv) exactly: the bounds are lanes' own
+// values, never tighter, so no lane that would enter a box is culled.
+inline unsigned frustum_slots(const PacketRays& r, const __m128 (&rows)[6], __m128 tmin, __m128 limit_max) {
+    __m128 near_min[3], far_max[3];
+    for (int a = 0; a < 3; ++a) {
+        near_min[a] = _mm_min_ps(_mm_mul_ps(rows[a], r.inv_lo[a]), _mm_mul_ps(rows[a], r.inv_hi[a]));
+        far_max[a] = _mm_max_ps(_mm_mul_ps(rows[3 + a], r.inv_lo[a]), _mm_mul_ps(rows[3 + a], r.inv_hi[a]));
+    }
+    const __m128 enter = _mm_max_ps(_mm_max_ps(tmin, near_min[0]), _mm_max_ps(near_min[1], near_min[2]));
+    const __m128 leave = _mm_min_ps(_mm_min_ps(limit_max, far_max[0]), _mm_min_ps(far_max[1], far_max[2]));
+    return unsigned(_mm_movemask_ps(_mm_cmple_ps(enter, leave)));
 }
 
 inline float horizontal_min(__m128 v) {
@@ -249,16 +284,34 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
             const Bvh4Node& n = nodes[ref];
             __m128 limit[kGroups];
             for (int g = 0; g < kGroups; ++g) limit[g] = _mm_load_ps(&best[4 * g]);
-            // All four children without a branch between them: four independent chains.
             alignas(16) float enter_t[4][kPacketSize];
             __m128 key[4];
             unsigned hit[4];
             __m128 rows[6];
             load_planes<kSameSigns, kCommonOrigin>(n, r, rows);
-            hit[0] = test_child<kSameSigns, kCommonOrigin, 0>(r, rows, limit, tmin, enter_t[0], key[0]);
-            hit[1] = test_child<kSameSigns, kCommonOrigin, 1>(r, rows, limit, tmin, enter_t[1], key[1]);
-            hit[2] = test_child<kSameSigns, kCommonOrigin, 2>(r, rows, limit, tmin, enter_t[2], key[2]);
-            hit[3] = test_child<kSameSigns, kCommonOrigin, 3>(r, rows, limit, tmin, enter_t[3], key[3]);
+            if constexpr (kSameSigns && kCommonOrigin) {
+                // Cull the slots no lane can enter first, then test the lanes on the rest.
+                __m128 limit_max = limit[0];
+                for (int g = 1; g < kGroups; ++g) limit_max = _mm_max_ps(limit_max, limit[g]);
+                limit_max = _mm_max_ps(limit_max, _mm_shuffle_ps(limit_max, limit_max, _MM_SHUFFLE(2, 3, 0, 1)));
+                limit_max = _mm_max_ps(limit_max, _mm_shuffle_ps(limit_max, limit_max, _MM_SHUFFLE(1, 0, 3, 2)));
+                const unsigned slots = frustum_slots(r, rows, tmin, limit_max);
+                alignas(16) float row_values[6][4];
+                for (int k = 0; k < 6; ++k) _mm_store_ps(row_values[k], rows[k]);
+                hit[0] = hit[1] = hit[2] = hit[3] = 0;
+                for (unsigned rest = slots; rest != 0; rest &= rest - 1) {
+                    const int c = lowest_bit(rest);
+                    __m128 plane[6];
+                    for (int k = 0; k < 6; ++k) plane[k] = _mm_set1_ps(row_values[k][c]);
+                    hit[c] = test_child<kSameSigns, kCommonOrigin>(r, plane, limit, tmin, enter_t[c], key[c]);
+                }
+            } else {
+                // All four children without a branch between them: four independent chains.
+                hit[0] = test_slot<kSameSigns, kCommonOrigin, 0>(r, rows, limit, tmin, enter_t[0], key[0]);
+                hit[1] = test_slot<kSameSigns, kCommonOrigin, 1>(r, rows, limit, tmin, enter_t[1], key[1]);
+                hit[2] = test_slot<kSameSigns, kCommonOrigin, 2>(r, rows, limit, tmin, enter_t[2], key[2]);
+                hit[3] = test_slot<kSameSigns, kCommonOrigin, 3>(r, rows, limit, tmin, enter_t[3], key[3]);
+            }
             if (!kSameSigns) {
                 // Unused slots have lo = +inf > hi = -inf, which min/max made infinite boxes.
                 const int used = _mm_movemask_ps(_mm_cmple_ps(_mm_load_ps(n.box[0]), _mm_load_ps(n.box[3])));
@@ -334,7 +387,7 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
 unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& instances,
                                   const Ray (&rays)[kPacketSize], unsigned active, float t_min, float t_max,
                                   Hit (&hits)[kPacketSize]) {
-    active &= (kPacketSize == 32 ? ~0u : (1u << kPacketSize) - 1);
+    active &= ~0u >> (32 - kPacketSize);
     if (bvh.nodes.empty() || active == 0) return 0;
     const PacketRays r(rays, active);
     if (r.common_origin)

@@ -77,7 +77,7 @@ Image one_ray_at_a_time(const Scene& scene, const RenderOptions& o, RayCounts& c
 
 // render() finds the camera rays' hits a packet at a time: every byte and every ray count must be
 // what tracing them one at a time gives, in every mode, for image and tile sizes that cut packets
-// (4×2 pixels) at the tiles' and the image's edges.
+// (kPacketWidth × kPacketHeight pixels) at the tiles' and the image's edges.
 void expect_packets_change_nothing(const Scene& scene, const char* name) {
     struct Size { int w, h, tile; };
     const Size sizes[] = {{97, 61, 16}, {64, 48, 32}, {33, 17, 5}, {10, 7, 1}, {160, 120, 32}};
