@@ -10,7 +10,7 @@
 // one test for the whole packet (frustum_slots), then test the lanes on the children left.
 #include "accel/bvh_packet.h"
 
-#include <cstring>
+#include <cstddef>
 #include <limits>
 
 #if defined(__SSE2__) || defined(_M_X64)
@@ -60,42 +60,54 @@ struct PacketRays {
     __m128 inv_lo[3], inv_hi[3];
 
     PacketRays(const Ray (&rays)[kPacketSize], unsigned active) {
+        static_assert(sizeof(Ray) == 6 * sizeof(float) && offsetof(Ray, direction) == 3 * sizeof(float));
         const int first = __builtin_ctz(active);
-        const Ray* lane[kPacketSize];
-        common_origin = true;
-        for (int l = 0; l < kPacketSize; ++l) {
-            lane[l] = ((active >> l) & 1) ? &rays[l] : &rays[first];  // inactive: any finite ray
-            common_origin = common_origin && std::memcmp(&lane[l]->origin, &rays[first].origin, sizeof(Ray::origin)) == 0;
-        }
-        same_signs = true;
         const __m128 sign = _mm_set1_ps(-0.0f), tiny = _mm_set1_ps(1e-30f), one = _mm_set1_ps(1.0f);
         const __m128 nan = _mm_set1_ps(std::numeric_limits<float>::quiet_NaN());
-        for (int a = 0; a < 3; ++a) {
-            origin[a] = _mm_set1_ps(rays[first].origin[a]);
-            unsigned negative = 0;
-            for (int g = 0; g < kGroups; ++g) {
-                // Built in registers: four scalar stores then a vector load would stall.
-                const Ray* const* q = &lane[4 * g];
-                o[g][a] = _mm_setr_ps(q[0]->origin[a], q[1]->origin[a], q[2]->origin[a], q[3]->origin[a]);
-                d[g][a] = _mm_setr_ps(q[0]->direction[a], q[1]->direction[a], q[2]->direction[a], q[3]->direction[a]);
+        const float* first_ray = reinterpret_cast<const float*>(&rays[first]);
+        for (int a = 0; a < 3; ++a) origin[a] = _mm_set1_ps(first_ray[a]);
+        unsigned negative[3] = {0, 0, 0}, same_origin = 0;
+        for (int g = 0; g < kGroups; ++g) {
+            // Four rays to structure of arrays: (ox, oy, oz, dx) and (oz, dx, dy, dz) of each,
+            // transposed. Inactive lanes take the first active lane's ray (any finite ray).
+            __m128 head[4], tail[4];
+            for (int k = 0; k < 4; ++k) {
+                const int l = 4 * g + k;
+                const float* ray = reinterpret_cast<const float*>(&rays[((active >> l) & 1) ? l : first]);
+                head[k] = _mm_loadu_ps(ray);
+                tail[k] = _mm_loadu_ps(ray + 2);
+            }
+            _MM_TRANSPOSE4_PS(head[0], head[1], head[2], head[3]);
+            _MM_TRANSPOSE4_PS(tail[0], tail[1], tail[2], tail[3]);
+            const __m128 on = lane_mask(active >> (4 * g));
+            __m128 same = on;
+            for (int a = 0; a < 3; ++a) {
+                o[g][a] = head[a];
+                d[g][a] = tail[1 + a];
+                same = _mm_and_ps(same, _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_castps_si128(o[g][a]),
+                                                                         _mm_castps_si128(origin[a]))));
+                negative[a] |= unsigned(_mm_movemask_ps(_mm_and_ps(on, d[g][a]))) << (4 * g);  // = sign of 1/d
                 // bvh_detail::safe_reciprocal: 1 / (|d| > 1e-30 ? d : copysign(1e-30, d)).
                 const __m128 big = _mm_cmpgt_ps(_mm_andnot_ps(sign, d[g][a]), tiny);
                 const __m128 safe =
                     _mm_or_ps(_mm_and_ps(big, d[g][a]), _mm_andnot_ps(big, _mm_or_ps(_mm_and_ps(sign, d[g][a]), tiny)));
-                const __m128 on = lane_mask(active >> (4 * g));
                 const __m128 rcp = _mm_div_ps(one, safe);  // inactive lanes: an active lane's
                 inv_lo[a] = g == 0 ? rcp : _mm_min_ps(inv_lo[a], rcp);
                 inv_hi[a] = g == 0 ? rcp : _mm_max_ps(inv_hi[a], rcp);
                 inv[a][g] = _mm_or_ps(_mm_and_ps(on, rcp), _mm_andnot_ps(on, nan));
-                negative |= unsigned(_mm_movemask_ps(_mm_and_ps(on, inv[a][g]))) << (4 * g);
             }
+            same_origin |= unsigned(_mm_movemask_ps(same)) << (4 * g);
+        }
+        common_origin = same_origin == active;  // bit for bit
+        same_signs = true;
+        for (int a = 0; a < 3; ++a) {
             inv_lo[a] = _mm_min_ps(inv_lo[a], _mm_shuffle_ps(inv_lo[a], inv_lo[a], _MM_SHUFFLE(2, 3, 0, 1)));
             inv_lo[a] = _mm_min_ps(inv_lo[a], _mm_shuffle_ps(inv_lo[a], inv_lo[a], _MM_SHUFFLE(1, 0, 3, 2)));
             inv_hi[a] = _mm_max_ps(inv_hi[a], _mm_shuffle_ps(inv_hi[a], inv_hi[a], _MM_SHUFFLE(2, 3, 0, 1)));
             inv_hi[a] = _mm_max_ps(inv_hi[a], _mm_shuffle_ps(inv_hi[a], inv_hi[a], _MM_SHUFFLE(1, 0, 3, 2)));
-            same_signs = same_signs && (negative == 0 || negative == active);
-            near_row[a] = negative != 0 ? 3 + a : a;
-            far_row[a] = negative != 0 ? a : 3 + a;
+            same_signs = same_signs && (negative[a] == 0 || negative[a] == active);
+            near_row[a] = negative[a] != 0 ? 3 + a : a;
+            far_row[a] = negative[a] != 0 ? a : 3 + a;
         }
     }
 };
