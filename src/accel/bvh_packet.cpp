@@ -154,7 +154,8 @@ inline unsigned test_child(const PacketRays& r, const __m128 (&plane)[6], const 
             t_near[a] = kSameSigns ? t0 : _mm_min_ps(t0, t1);
             t_far[a] = kSameSigns ? t1 : _mm_max_ps(t0, t1);
         }
-        // As in the single-ray test; NaN (inactive lane) in, NaN out.
+        // The single-ray test's entry and exit (min and max are exact, so their order only
+        // decides how NaN spreads: ordered so that NaN (an inactive lane) in gives NaN out).
         const __m128 enter = _mm_max_ps(_mm_max_ps(tmin, t_near[0]), _mm_max_ps(t_near[1], t_near[2]));
         const __m128 leave = _mm_min_ps(_mm_min_ps(limit[g], t_far[0]), _mm_min_ps(t_far[1], t_far[2]));
         const __m128 in = _mm_cmple_ps(enter, leave);
