@@ -2,8 +2,10 @@
 # Installs the Debian packages whitted builds and tests with. Safe to run again.
 # Usage: scripts/install-deps.sh [--viewer-test]   (--viewer-test adds Xvfb and tools for the viewer's screen test)
 set -euo pipefail
+# fluid: Debian's FLTK CMake package config names /usr/bin/fluid and stops find_package(FLTK) without it,
+# although whitted never runs fluid; libfltk1.3-dev only recommends it.
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libcli11-dev libgtest-dev libgmock-dev
-          libbenchmark-dev libfltk1.3-dev)
+          libbenchmark-dev libfltk1.3-dev fluid)
 if [[ "${1:-}" == "--viewer-test" ]]; then packages+=(xvfb x11-apps imagemagick xdotool); fi
 
 missing=()
