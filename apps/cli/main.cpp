@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
     CLI::App app{"whitted: a Whitted-style ray tracer for SceneView/Ray .sc scene files"};
     app.set_version_flag("--version", "whitted 0.1.0");
     std::string scene_path, output, mode_name = "whitted", missing = "error";
-    int width = 640, height = 480, max_depth = 5, threads = 0;
+    int width = 640, height = 480, max_depth = 5, aa = 1, threads = 0;
     bool lenient = false, quiet = false, stats = false;
     std::vector<std::string> texture_dirs;
     app.add_option("scene", scene_path, "Scene file (.sc); without one, renders the bundled showcase");
@@ -46,6 +46,8 @@ int main(int argc, char** argv) {
     app.add_option("--height", height, "Image height in pixels")->check(CLI::Range(1, 32768));
     app.add_option("--max-depth", max_depth, "Recursion limit for reflection/refraction (camera ray = 0)")
         ->check(CLI::Range(0, 1000));
+    app.add_option("--aa", aa, "Anti-aliasing: N x N rays per pixel, averaged (1 = one ray through the centre)")
+        ->check(CLI::Range(1, kMaxAa));
     app.add_option("--mode", mode_name, "Render mode")->check(CLI::IsMember({"whitted", "raycast", "normals", "depth"}));
     app.add_option("--threads", threads, "Worker threads (0 = all hardware threads)")->check(CLI::Range(0, 1024));
     app.add_option("--texture-path", texture_dirs, "Extra directory to look for textures in (repeatable)");
@@ -88,6 +90,7 @@ int main(int argc, char** argv) {
     options.width = width;
     options.height = height;
     options.max_depth = max_depth;
+    options.aa = aa;
     options.mode = *parse_render_mode(mode_name);
     options.threads = threads;
     options.cancel = &cli::interrupt_flag();

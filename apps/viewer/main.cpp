@@ -69,6 +69,8 @@ int main(int argc, char** argv) {
     app.add_flag("--fit", o.fit_window, "Render at the size of the image area");
     app.add_option("--max-depth", o.settings.max_depth, "Recursion limit for reflection/refraction")
         ->check(CLI::Range(0, 1000));
+    app.add_option("--aa", o.settings.aa, "Anti-aliasing: N x N rays per pixel, averaged")
+        ->check(CLI::Range(1, kMaxAa));
     app.add_option("--mode", mode_name, "Render mode")->check(CLI::IsMember({"whitted", "raycast", "normals", "depth"}));
     app.add_option("--threads", o.settings.threads, "Worker threads (0 = all hardware threads)")
         ->check(CLI::Range(0, 1024));

@@ -96,6 +96,7 @@ void RenderController::begin_locked(std::shared_ptr<Job> job, const std::string&
     job->settings.width = std::max(1, settings.width);
     job->settings.height = std::max(1, settings.height);
     job->settings.max_depth = std::max(0, settings.max_depth);
+    job->settings.aa = std::clamp(settings.aa, 1, kMaxAa);
     job->settings.threads = std::max(0, settings.threads);
     job->settings.tile_size = std::max(1, settings.tile_size);
     current_ = job;
@@ -200,6 +201,7 @@ void RenderController::run(std::shared_ptr<Job> job) {
     options.width = s.width;
     options.height = s.height;
     options.max_depth = s.max_depth;
+    options.aa = s.aa;
     options.mode = s.mode;
     options.threads = s.threads;
     options.tile_size = s.tile_size;

@@ -15,6 +15,7 @@
 #include "film/image.h"
 #include "integrator/render_mode.h"
 #include "render/load_scene.h"
+#include "render/renderer.h"  // kMaxAa
 
 namespace whitted::viewer {
 
@@ -36,6 +37,7 @@ struct RenderSettings {
     int width = 640, height = 480;
     int max_depth = 5;
     RenderMode mode = RenderMode::Whitted;
+    int aa = 1;       // anti-aliasing: aa × aa rays per pixel
     int threads = 0;  // 0 = all hardware threads
     int tile_size = 32;
 };

@@ -140,6 +140,8 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     mode_->value(int(options.settings.mode));
     mode_->tooltip("whitted: full lighting; raycast: unlit colour; normals, depth: debugging views");
     x += 40 + 90 + 10;
+    aa_ = spinner("AA", 28, 44, 1, kMaxAa, options.settings.aa,
+                  "Anti-aliasing: N x N rays per pixel, averaged (1 = one ray through the pixel centre)");
     const int hw = int(std::max(1u, std::thread::hardware_concurrency()));
     threads_ = spinner("Threads", 56, 52, 1, 1024, options.settings.threads > 0 ? options.settings.threads : hw,
                        "Worker threads");
@@ -236,6 +238,7 @@ void ViewerWindow::read_controls(RenderSettings& s, bool& fit) {
     }
     s.max_depth = int(depth_->value());
     s.mode = RenderMode(std::max(0, mode_->value()));
+    s.aa = int(aa_->value());
     s.threads = int(threads_->value());
 }
 

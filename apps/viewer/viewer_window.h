@@ -74,7 +74,7 @@ private:
 
     Fl_Menu_Bar* menu_ = nullptr;
     Fl_Button *render_button_ = nullptr, *stop_button_ = nullptr;
-    Fl_Spinner *width_ = nullptr, *height_ = nullptr, *depth_ = nullptr, *threads_ = nullptr;
+    Fl_Spinner *width_ = nullptr, *height_ = nullptr, *depth_ = nullptr, *aa_ = nullptr, *threads_ = nullptr;
     Fl_Check_Button* fit_ = nullptr;
     Fl_Choice* mode_ = nullptr;
     Fl_Scroll* scroll_ = nullptr;

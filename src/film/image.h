@@ -19,10 +19,10 @@ struct Image {
     }
 };
 
+// c clamped to [0, 1], NaN mapped to 0: what an 8-bit image can show.
+inline float clamp01(float c) { return c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f; }
+
 // ⌊255·clamp(c, 0, 1) + 0.5⌋ (scene-format.md §7): linear, no gamma curve.
-inline std::uint8_t to_byte(float c) {
-    c = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;  // also maps NaN to 0
-    return static_cast<std::uint8_t>(255.0f * c + 0.5f);
-}
+inline std::uint8_t to_byte(float c) { return static_cast<std::uint8_t>(255.0f * clamp01(c) + 0.5f); }
 
 }  // namespace whitted

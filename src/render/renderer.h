@@ -14,6 +14,7 @@ namespace whitted {
 // The camera rays are traced in packets of kPacketWidth × kPacketHeight neighbouring pixels.
 constexpr int kPacketWidth = 4;
 constexpr int kPacketHeight = kPacketSize / kPacketWidth;
+constexpr int kMaxAa = 16;  // --aa range: 256 rays per pixel at most
 
 struct Tile {
     int x0, y0, x1, y1;  // pixels [x0, x1) × [y0, y1)
@@ -23,6 +24,10 @@ struct RenderOptions {
     int width = 640, height = 480;
     int max_depth = 5;
     RenderMode mode = RenderMode::Whitted;
+    // Anti-aliasing: aa × aa camera rays per pixel through the centres of a regular grid of
+    // sub-pixels, each colour clamped to [0, 1] before their mean is taken. 1 = one ray through
+    // the pixel centre.
+    int aa = 1;
     int threads = 0;     // 0 = all hardware threads
     int tile_size = 32;
     // Set by another thread (or a signal handler) to stop; checked at least once per tile row.

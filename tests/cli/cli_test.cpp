@@ -55,10 +55,34 @@ TEST(Cli, BadUsageExitsOne) {
     EXPECT_EQ(run_process({test::cli_path(), "--width", "0"}).exit_code, 1);
     EXPECT_EQ(run_process({test::cli_path(), "--no-such-flag"}).exit_code, 1);
     EXPECT_EQ(run_process({test::cli_path(), "--mode", "fancy"}).exit_code, 1);
+    EXPECT_EQ(run_process({test::cli_path(), "--aa", "0"}).exit_code, 1);
+    EXPECT_EQ(run_process({test::cli_path(), "--aa", "17"}).exit_code, 1);
     EXPECT_EQ(run_process({test::cli_path(), "x.sc", "-o", "out.gif"}).exit_code, 1);
     auto help = run_process({test::cli_path(), "--help"});
     EXPECT_EQ(help.exit_code, 0);
     EXPECT_NE(help.output.find("--max-depth"), std::string::npos);
+}
+
+TEST(Cli, AntiAliasingSmoothsTheBallsOutline) {
+    // The red ball's outline, a circle of about 12 pixels' radius (seen from 1.5 away, 60° over
+    // 40 pixels), crosses some 75 pixels: with --aa 4 they are partly red, where one ray per
+    // pixel gives only all or nothing.
+    std::string dir = test::make_temp_dir();
+    std::string scene = write_file(dir, "s.sc", "camera [ eye 0 0 1.5 focus 0 0 0 ]\n"
+                                                "mastersubgraph root [ trans [ object sphere [ diffuse 0 0 0 ambient 1 0 0 ] ] ]\n");
+    auto count_partial = [&](const char* aa) {
+        std::string out = dir + "/aa" + aa + ".png";
+        auto r = run_process({test::cli_path(), scene, "-o", out, "--width", "40", "--height", "40", "--aa", aa, "-q"});
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+        Image img;
+        EXPECT_EQ(read_image(out, img), "");
+        int partial = 0;
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x) partial += img.at(x, y).x > 0 && img.at(x, y).x < 255;
+        return partial;
+    };
+    EXPECT_EQ(count_partial("1"), 0) << "ambient 1 0 0 and no light: every ray sees red 255 or black";
+    EXPECT_GT(count_partial("4"), 40);
 }
 
 TEST(Cli, BadSceneExitsTwoWithALocatedError) {

@@ -175,6 +175,91 @@ TEST(Renderer, CancelledBeforeTheStartRendersNothing) {
     for (auto v : img.rgb) ASSERT_EQ(v, 0);
 }
 
+// A glowing wall filling the image left of a vertical edge that falls at pixel column
+// `edge_px` (in pixel units from the image's left side) of a width × height image, the rest
+// background. The default camera looks down −z from z = 1; the wall's face is at z = −4.5.
+Scene edge_scene(int width, int height, float edge_px, glm::vec3 glow, glm::vec3 background) {
+    const Camera cam;
+    const float aspect = float(width) / float(height);
+    const float edge_x = (2.0f * edge_px / float(width) - 1.0f) * cam.tan_half_fov * aspect * 5.5f;
+    test::SceneBuilder b;
+    b.add(ShapeKind::Cube, test::translate_scale({edge_x - 50.0f, 0, -5}, {100, 100, 1}), test::emitter(glow));
+    b.background(background);
+    return b.build();
+}
+
+TEST(Renderer, AntiAliasingAveragesTheSubPixelsAPixelIsCutInto) {
+    const glm::vec3 red(1, 0, 0), blue(0, 0, 1);
+    RenderOptions o;
+    o.width = 9;
+    o.height = 5;
+    {
+        // Edge through the middle of column 4: with 2×2 rays, two see the wall, two the background.
+        o.aa = 2;
+        Image img(o.width, o.height);
+        RenderStats s = render(edge_scene(9, 5, 4.5f, red, blue), o, img);
+        EXPECT_EQ(s.rays.camera, 9u * 5u * 4u);
+        for (int y = 0; y < 5; ++y) {
+            EXPECT_EQ(img.at(3, y), glm::u8vec3(255, 0, 0)) << y;
+            EXPECT_EQ(img.at(4, y), glm::u8vec3(128, 0, 128)) << y;  // ⌊255 · 0.5 + 0.5⌋
+            EXPECT_EQ(img.at(5, y), glm::u8vec3(0, 0, 255)) << y;
+        }
+    }
+    {
+        // Edge three quarters across column 4: sub-pixel centres at 4.125, 4.375, 4.625 (wall) and
+        // 4.875 (background), so 3/4 red, 1/4 blue.
+        o.aa = 4;
+        Image img(o.width, o.height);
+        RenderStats s = render(edge_scene(9, 5, 4.75f, red, blue), o, img);
+        EXPECT_EQ(s.rays.camera, 9u * 5u * 16u);
+        EXPECT_EQ(img.at(4, 2), glm::u8vec3(191, 0, 64));  // ⌊191.25 + 0.5⌋, ⌊63.75 + 0.5⌋
+        EXPECT_EQ(img.at(0, 2), glm::u8vec3(255, 0, 0));
+        EXPECT_EQ(img.at(8, 2), glm::u8vec3(0, 0, 255));
+    }
+    {
+        // aa = 1 is the single ray through the pixel centre: column 4's centre (4.5) is left of
+        // an edge at 4.75.
+        o.aa = 1;
+        Image img(o.width, o.height);
+        render(edge_scene(9, 5, 4.75f, red, blue), o, img);
+        EXPECT_EQ(img.at(4, 2), glm::u8vec3(255, 0, 0));
+    }
+}
+
+TEST(Renderer, AntiAliasingClampsEachRayBeforeTheMean) {
+    // A wall glowing 4× brighter than white beside black: the half-covered pixel shows half of
+    // white (what each ray can show), not the clipped mean of 2.
+    RenderOptions o;
+    o.width = 9;
+    o.height = 5;
+    o.aa = 2;
+    Image img(o.width, o.height);
+    render(edge_scene(9, 5, 4.5f, glm::vec3(4.0f), glm::vec3(0.0f)), o, img);
+    EXPECT_EQ(img.at(4, 2), glm::u8vec3(128));
+}
+
+TEST(Renderer, AntiAliasedImageIsByteIdenticalForAnyThreadCountAndTileSize) {
+    Scene scene = busy_scene();
+    RenderOptions o;
+    o.width = 97;
+    o.height = 61;
+    o.aa = 3;  // 9 rays a pixel: packets of 16 straddle pixels
+    o.tile_size = 16;
+    o.threads = 1;
+    Image one(o.width, o.height), two(o.width, o.height), other_tiles(o.width, o.height), plain(o.width, o.height);
+    const RenderStats s = render(scene, o, one);
+    EXPECT_EQ(s.rays.camera, std::uint64_t(97 * 61 * 9));
+    o.threads = 2;
+    render(scene, o, two);
+    o.tile_size = 7;
+    render(scene, o, other_tiles);
+    EXPECT_EQ(one.rgb, two.rgb);
+    EXPECT_EQ(one.rgb, other_tiles.rgb);
+    o.aa = 1;
+    render(scene, o, plain);
+    EXPECT_NE(one.rgb, plain.rgb) << "anti-aliasing should change the edges of the shapes";
+}
+
 TEST(Renderer, ToByteRoundsAndClamps) {
     EXPECT_EQ(to_byte(0.0f), 0);
     EXPECT_EQ(to_byte(1.0f), 255);
