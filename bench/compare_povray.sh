@@ -25,7 +25,20 @@ scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=("$here/scenes/small.sc" "$here/scenes/grid10k.sc")
 whitted="$build/apps/cli/whitted"
 [ -x "$whitted" ] || { echo "compare_povray: no $whitted (build it, or pass -b BUILD_DIR)" >&2; exit 1; }
-command -v povray >/dev/null || { echo "compare_povray: povray (3.7) is not installed" >&2; exit 1; }
+# POV-Ray 3.7 (Debian's povray) and bc (the arithmetic below), installed when missing.
+need=()
+command -v povray >/dev/null || need+=(povray)
+command -v bc >/dev/null || need+=(bc)
+if ((${#need[@]})); then
+  sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "compare_povray: installing ${need[*]}" >&2
+  $sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${need[@]}" >&2
+fi
+povray_version="$(povray --version 2>&1 | grep -o -m1 'POV-Ray [0-9.]*' || true)"
+case "$povray_version" in
+  "POV-Ray 3.7"*) ;;
+  *) echo "compare_povray: need POV-Ray 3.7, found '${povray_version:-nothing}'" >&2; exit 1 ;;
+esac
 
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
@@ -33,7 +46,7 @@ trap 'rm -rf "$tmp"' EXIT
 now() { date +%s.%N; }
 median() { sort -g | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
 
-echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) hardware threads; load: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "$povray_version; machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) hardware threads; load: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "size ${width}x${height}, depth $depth (POV-Ray max_trace_level $((depth + 1))), $threads threads, no AA, $runs alternating runs each, median wall time of the whole process"
 printf "%-14s %12s %12s %9s\n" scene whitted_s povray_s ratio
 for sc in "${scenes[@]}"; do
@@ -45,7 +58,8 @@ for sc in "${scenes[@]}"; do
     t0=$(now)
     "$whitted" "$sc" -o "$tmp/w.png" --width "$width" --height "$height" --max-depth "$depth" --threads "$threads" -q
     t1=$(now)
-    povray +I"$tmp/scene.pov" +O"$tmp/p.png" +W"$width" +H"$height" -A -D -V -GA +WT"$threads" 2>/dev/null
+    povray +I"$tmp/scene.pov" +O"$tmp/p.png" +W"$width" +H"$height" -A -D -V -GA +WT"$threads" 2>"$tmp/povray.log" ||
+      { echo "compare_povray: POV-Ray failed on $pov:" >&2; cat "$tmp/povray.log" >&2; exit 1; }
     t2=$(now)
     echo "$t1 - $t0" | bc -l >> "$tmp/w.times"
     echo "$t2 - $t1" | bc -l >> "$tmp/p.times"

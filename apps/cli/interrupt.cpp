@@ -3,6 +3,8 @@
 #include <csignal>
 #include <unistd.h>
 
+#include "film/image_io.h"
+
 namespace whitted::cli {
 namespace {
 
@@ -13,6 +15,7 @@ extern "C" void on_sigint(int) {
     if (g_interrupted.exchange(true)) {
         const char msg[] = "\nwhitted: interrupted twice, exiting now\n";
         (void)!write(STDERR_FILENO, msg, sizeof msg - 1);
+        if (const char* partial = image_file_being_written()) unlink(partial);  // never leave half a file
         _exit(130);
     }
 }

@@ -1,6 +1,6 @@
 #pragma once
-// Ctrl-C handling: the first SIGINT asks the render to stop (the partial image is still
-// written); a second one exits at once.
+// Ctrl-C handling: the first SIGINT asks the load or the render to stop (a partial image is
+// still written); a second one exits at once, removing an image file only partly written.
 #include <atomic>
 
 namespace whitted::cli {

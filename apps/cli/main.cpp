@@ -71,13 +71,19 @@ int main(int argc, char** argv) {
         return kExitUsage;
     }
 
+    cli::install_interrupt_handler();  // from here on Ctrl-C stops the load or the render
     LoadOptions load_options;
+    load_options.cancel = &cli::interrupt_flag();
     load_options.lenient = lenient;
     load_options.threads = threads;  // --threads 1 means one thread for the build too
     load_options.textures.search_dirs = texture_dirs;
     load_options.textures.missing = missing == "checker" ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
     LoadResult loaded = load_scene(scene_path, load_options);
     for (const Diagnostic& d : loaded.diagnostics) std::cerr << d.str() << "\n";
+    if (loaded.cancelled) {
+        std::cerr << "whitted: interrupted while loading the scene: nothing written\n";
+        return kExitInterrupted;
+    }
     if (!loaded.ok()) {
         if (!loaded.missing_textures.empty() && missing == "error")
             std::cerr << "whitted: use --texture-path DIR to add a place to look, or --missing-textures=checker to "
@@ -85,7 +91,6 @@ int main(int argc, char** argv) {
         return kExitScene;
     }
 
-    cli::install_interrupt_handler();
     RenderOptions options;
     options.width = width;
     options.height = height;
@@ -113,7 +118,7 @@ int main(int argc, char** argv) {
                      "parse %.3fs, flatten %.3fs, textures %.3fs, build %.3fs, render %.3fs (%d threads)\n"
                      "rays: camera %llu, reflected %llu, refracted %llu, shadow %llu; %.2f Mrays/s\n",
                      ls.objects, ls.lights, ls.textures, ls.parse_seconds, ls.flatten_seconds, ls.texture_seconds,
-                     ls.build_seconds, rs.seconds, threads > 0 ? threads : int(std::thread::hardware_concurrency()),
+                     ls.build_seconds, rs.seconds, rs.threads,
                      (unsigned long long)rs.rays.camera, (unsigned long long)rs.rays.reflected,
                      (unsigned long long)rs.rays.refracted, (unsigned long long)rs.rays.shadow,
                      rs.seconds > 0 ? double(rs.rays.total()) / rs.seconds * 1e-6 : 0.0);

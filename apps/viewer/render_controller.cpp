@@ -165,7 +165,11 @@ void RenderController::run(std::shared_ptr<Job> job) {
                 reused = true;
             }
         }
-        if (!reused) loaded = load_scene(job->path, job->load);
+        if (!reused) {
+            LoadOptions load = job->load;
+            load.cancel = &job->cancel;  // a job stopped or replaced while loading gives up early
+            loaded = load_scene(job->path, load);
+        }
 
         std::lock_guard lock(mutex_);
         if (!reused && loaded.ok()) cache_ = Cached{job->path, key, loaded};

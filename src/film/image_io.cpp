@@ -1,12 +1,14 @@
 #include "film/image_io.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <random>
+
+#include <unistd.h>
 
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
@@ -20,12 +22,62 @@ std::string extension_of(const std::string& path) {
     return ext;
 }
 
-bool write_ppm(const Image& image, const std::string& path) {
-    std::ofstream out(path, std::ios::binary);
-    out << "P6\n" << image.width << " " << image.height << "\n255\n";
-    out.write(reinterpret_cast<const char*>(image.rgb.data()), std::streamsize(image.rgb.size()));
-    out.close();
-    return bool(out);
+char g_writing_path[4096];
+std::atomic<bool> g_writing{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "read from signal handlers");
+
+// Names the temporary file in g_writing_path for as long as it may exist.
+class WritingGuard {
+public:
+    explicit WritingGuard(const std::string& tmp) {
+        if (tmp.size() >= sizeof g_writing_path) return;
+        std::memcpy(g_writing_path, tmp.c_str(), tmp.size() + 1);
+        g_writing.store(true, std::memory_order_release);
+    }
+    ~WritingGuard() { g_writing.store(false, std::memory_order_release); }
+    WritingGuard(const WritingGuard&) = delete;
+    WritingGuard& operator=(const WritingGuard&) = delete;
+};
+
+// Where the encoders' bytes go: the temporary file, every write checked (stb's own file writers
+// report success even when the disk is full), flushed to the disk before it is renamed.
+struct FileSink {
+    std::FILE* file = nullptr;
+    bool ok = true;
+    int error = 0;
+
+    explicit FileSink(const std::string& path) : file(std::fopen(path.c_str(), "wb")) {
+        if (!file) ok = false, error = errno;
+    }
+    void write(const void* data, std::size_t size) {
+        if (ok && std::fwrite(data, 1, size, file) != size) ok = false, error = errno;
+    }
+    static void callback(void* context, void* data, int size) {
+        static_cast<FileSink*>(context)->write(data, std::size_t(size));
+    }
+    // Flushes, syncs and closes; false (with error set) if any byte did not make it.
+    bool close() {
+        if (!file) return false;
+        if (ok && (std::fflush(file) != 0 || fsync(fileno(file)) != 0)) ok = false, error = errno;
+        if (std::fclose(file) != 0 && ok) ok = false, error = errno;
+        file = nullptr;
+        return ok;
+    }
+    ~FileSink() {
+        if (file) std::fclose(file);
+    }
+};
+
+bool encode(const Image& image, const std::string& ext, FileSink& sink) {
+    const int w = image.width, h = image.height;
+    const auto* px = image.rgb.data();
+    if (ext == ".png") return stbi_write_png_to_func(FileSink::callback, &sink, w, h, 3, px, w * 3) != 0;
+    if (ext == ".bmp") return stbi_write_bmp_to_func(FileSink::callback, &sink, w, h, 3, px) != 0;
+    if (ext == ".jpg" || ext == ".jpeg") return stbi_write_jpg_to_func(FileSink::callback, &sink, w, h, 3, px, 95) != 0;
+    const std::string header = "P6\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
+    sink.write(header.data(), header.size());
+    sink.write(px, image.rgb.size());
+    return true;
 }
 
 }  // namespace
@@ -44,17 +96,15 @@ std::string write_image(const Image& image, const std::string& path) {
     // concurrent writers apart. The extension stays last for readers that sniff it.
     std::random_device rd;
     const std::string tmp = path + ".tmp" + std::to_string(rd() % 1000000) + ext;
-    const int w = image.width, h = image.height;
-    const auto* px = image.rgb.data();
-    bool ok = false;
-    if (ext == ".png") ok = stbi_write_png(tmp.c_str(), w, h, 3, px, w * 3) != 0;
-    else if (ext == ".bmp") ok = stbi_write_bmp(tmp.c_str(), w, h, 3, px) != 0;
-    else if (ext == ".ppm") ok = write_ppm(image, tmp);
-    else ok = stbi_write_jpg(tmp.c_str(), w, h, 3, px, 95) != 0;
+    const WritingGuard guard(tmp);
+    FileSink sink(tmp);
+    const bool encoded = sink.ok && encode(image, ext, sink);
+    const bool ok = sink.close() && encoded;
+    const int error = sink.error;
     std::error_code ec;
     if (!ok) {
         std::filesystem::remove(tmp, ec);
-        return "cannot write '" + path + "': " + (errno ? std::strerror(errno) : "write failed");
+        return "cannot write '" + path + "': " + (error ? std::strerror(error) : "the image could not be encoded");
     }
     std::filesystem::rename(tmp, path, ec);
     if (ec) {
@@ -63,6 +113,10 @@ std::string write_image(const Image& image, const std::string& path) {
         return "cannot write '" + path + "': " + ec.message();
     }
     return "";
+}
+
+const char* image_file_being_written() {
+    return g_writing.load(std::memory_order_acquire) ? g_writing_path : nullptr;
 }
 
 std::string read_image(const std::string& path, Image& out) {

@@ -11,6 +11,11 @@ namespace whitted {
 // complete, so a failure never leaves a half-written image. Returns "" or an error message.
 std::string write_image(const Image& image, const std::string& path);
 
+// The temporary file a write_image call is writing right now, or nullptr. For a signal handler
+// that exits at once: it may read this (a fixed buffer behind an atomic flag, async-signal-safe)
+// and unlink the file, so that not even an exit in mid-write leaves a partial file behind.
+const char* image_file_being_written();
+
 // True for the extensions write_image understands (.png .bmp .ppm .jpg .jpeg).
 bool is_supported_output(const std::string& path);
 

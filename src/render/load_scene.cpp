@@ -12,27 +12,31 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 
 LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_seconds) {
     LoadResult result;
+    auto cancelled = [&] {
+        return result.cancelled = options.cancel && options.cancel->load(std::memory_order_relaxed);
+    };
     result.stats.parse_seconds = parse_seconds;
     result.diagnostics = std::move(parsed.diagnostics);
-    if (has_errors(result.diagnostics)) return result;
+    if (has_errors(result.diagnostics) || cancelled()) return result;
 
     auto t = Clock::now();
     FlattenResult flat = flatten(parsed.scene);
     result.stats.flatten_seconds = since(t);
     for (auto& d : flat.diagnostics) result.diagnostics.push_back(d);
-    if (!flat.ok()) return result;
+    if (!flat.ok() || cancelled()) return result;
 
     t = Clock::now();
     result.missing_textures = load_textures(flat, parsed.scene.path, options.textures, result.diagnostics);
     result.stats.texture_seconds = since(t);
-    if (has_errors(result.diagnostics)) return result;
+    if (has_errors(result.diagnostics) || cancelled()) return result;
 
     t = Clock::now();
     result.stats.objects = flat.scene.instances.size();
     result.stats.lights = flat.scene.lights.size();
     result.stats.textures = flat.scene.textures.size();
-    result.scene = std::make_shared<const Scene>(accelerate(std::move(flat.scene), options.threads));
+    auto scene = std::make_shared<const Scene>(accelerate(std::move(flat.scene), options.threads));
     result.stats.build_seconds = since(t);
+    if (!cancelled()) result.scene = std::move(scene);
     return result;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // The library's front door: scene file → renderable Scene, every problem returned as data.
+#include <atomic>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,6 +15,8 @@ struct LoadOptions {
     bool lenient = false;
     int threads = 0;  // for building the BVH; 0 = all hardware threads
     TextureOptions textures;
+    // Set by another thread (or a signal handler) to give up; checked between the load's stages.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 struct LoadStats {
@@ -26,6 +29,7 @@ struct LoadResult {
     std::vector<Diagnostic> diagnostics;     // warnings and errors, in order
     std::vector<MissingTexture> missing_textures;  // also reported in diagnostics
     LoadStats stats;
+    bool cancelled = false;  // LoadOptions::cancel was set: no scene, no error
     bool ok() const { return scene != nullptr; }
 };
 

@@ -165,6 +165,7 @@ RenderStats render(const Scene& scene, const RenderOptions& options, Image& imag
 
     int n = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
     n = std::min(n, std::max(1, int(tiles.size())));
+    stats.threads = n;
     std::vector<std::thread> pool;
     for (int i = 1; i < n; ++i) pool.emplace_back(worker);
     worker();

@@ -40,6 +40,7 @@ struct RenderStats {
     RayCounts rays;
     double seconds = 0;
     int tiles_done = 0, tiles_total = 0;
+    int threads = 0;  // worker threads used (never more than there are tiles)
     bool cancelled = false;  // pixels of unfinished tiles are left as they were (black in a new image)
 };
 

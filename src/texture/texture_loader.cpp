@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
 #include <unordered_map>
 
 #include <stb/stb_image.h>
@@ -10,12 +13,41 @@ namespace whitted {
 namespace fs = std::filesystem;
 namespace {
 
+// stb_image reads zeros past the end of a truncated BMP, TGA or PPM and reports success; such a
+// file decodes differently once bytes are appended. PNG's own checks already catch truncation.
+bool decoded_past_the_end(const std::vector<unsigned char>& bytes, const unsigned char* data, int w, int h) {
+    static const unsigned char kPng[] = {0x89, 'P', 'N', 'G'};
+    if (bytes.size() >= 4 && std::equal(kPng, kPng + 4, bytes.begin())) return false;
+    std::vector<unsigned char> padded(bytes);
+    padded.resize(bytes.size() + 4096, 0xFF);  // more than any one pixel's bytes
+    int pw = 0, ph = 0, pn = 0;
+    unsigned char* again = stbi_load_from_memory(padded.data(), int(padded.size()), &pw, &ph, &pn, 3);
+    const bool same = again && pw == w && ph == h && std::equal(data, data + std::size_t(w) * h * 3, again);
+    stbi_image_free(again);
+    return !same;
+}
+
 // Decodes to linear floats (texel = byte / 255, no gamma decoding; alpha ignored).
 bool decode(const std::string& path, TextureImage& out, std::string& reason) {
+    std::ifstream in(path, std::ios::binary);
+    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in.good() && !in.eof()) {
+        reason = "cannot read '" + path + "'";
+        return false;
+    }
+    if (bytes.size() > std::size_t(std::numeric_limits<int>::max())) {
+        reason = "cannot decode '" + path + "': the file is too large";
+        return false;
+    }
     int w = 0, h = 0, n = 0;
-    unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 3);
+    unsigned char* data = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &n, 3);
     if (!data) {
         reason = std::string("cannot decode '") + path + "': " + (stbi_failure_reason() ? stbi_failure_reason() : "?");
+        return false;
+    }
+    if (decoded_past_the_end(bytes, data, w, h)) {
+        stbi_image_free(data);
+        reason = "cannot decode '" + path + "': the file ends before its last pixel (truncated)";
         return false;
     }
     out.width = w;

@@ -1,6 +1,7 @@
 #include "support/run_process.h"
 
 #include <fcntl.h>
+#include <pty.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,7 +14,46 @@
 
 namespace whitted::test {
 
+namespace {
+
+[[noreturn]] void exec_child(const std::vector<std::string>& argv) {
+    std::vector<char*> args;
+    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    execv(args[0], args.data());
+    _exit(127);
+}
+
+void read_all(int fd, std::string& out) {
+    char buf[4096];
+    for (ssize_t n; (n = read(fd, buf, sizeof buf)) > 0;) out.append(buf, size_t(n));
+}
+
+int exit_code_of(pid_t pid) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+}  // namespace
+
 ProcessResult run_process(const std::vector<std::string>& argv, int interrupt_after_ms) {
+    return run_process(argv, interrupt_after_ms >= 0 ? std::vector<int>{interrupt_after_ms} : std::vector<int>{});
+}
+
+ProcessResult run_in_terminal(const std::vector<std::string>& argv) {
+    ProcessResult result;
+    int master = -1;
+    pid_t pid = forkpty(&master, nullptr, nullptr, nullptr);
+    if (pid < 0) return result;
+    if (pid == 0) exec_child(argv);
+    read_all(master, result.output);  // ends with EIO once the child has gone
+    close(master);
+    result.exit_code = exit_code_of(pid);
+    return result;
+}
+
+ProcessResult run_process(const std::vector<std::string>& argv, const std::vector<int>& interrupts_ms) {
     ProcessResult result;
     int pipe_fd[2];
     if (pipe(pipe_fd) != 0) return result;
@@ -23,26 +63,22 @@ ProcessResult run_process(const std::vector<std::string>& argv, int interrupt_af
         dup2(pipe_fd[1], STDERR_FILENO);
         close(pipe_fd[0]);
         close(pipe_fd[1]);
-        std::vector<char*> args;
-        for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        args.push_back(nullptr);
-        execv(args[0], args.data());
-        _exit(127);
+        exec_child(argv);
     }
     close(pipe_fd[1]);
     std::thread interrupter;
-    if (interrupt_after_ms >= 0)
-        interrupter = std::thread([pid, interrupt_after_ms] {
-            std::this_thread::sleep_for(std::chrono::milliseconds(interrupt_after_ms));
-            kill(pid, SIGINT);
+    if (!interrupts_ms.empty())
+        interrupter = std::thread([pid, interrupts_ms] {
+            const auto start = std::chrono::steady_clock::now();
+            for (int ms : interrupts_ms) {
+                std::this_thread::sleep_until(start + std::chrono::milliseconds(ms));
+                kill(pid, SIGINT);  // harmless once the child has exited: it stays a zombie until waited for
+            }
         });
-    char buf[4096];
-    for (ssize_t n; (n = read(pipe_fd[0], buf, sizeof buf)) > 0;) result.output.append(buf, size_t(n));
+    read_all(pipe_fd[0], result.output);
     close(pipe_fd[0]);
-    int status = 0;
-    waitpid(pid, &status, 0);
     if (interrupter.joinable()) interrupter.join();
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    result.exit_code = exit_code_of(pid);
     return result;
 }
 

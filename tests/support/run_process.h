@@ -12,6 +12,10 @@ struct ProcessResult {
 
 // Runs argv[0] with argv; if interrupt_after_ms >= 0, sends SIGINT after that many milliseconds.
 ProcessResult run_process(const std::vector<std::string>& argv, int interrupt_after_ms = -1);
+// The same, sending SIGINT at each of the given times (milliseconds from the start, increasing).
+ProcessResult run_process(const std::vector<std::string>& argv, const std::vector<int>& interrupts_ms);
+// Runs argv with a pseudo-terminal as its stdin, stdout and stderr, as a user's shell would.
+ProcessResult run_in_terminal(const std::vector<std::string>& argv);
 
 // Paths the tests need.
 std::string cli_path();

@@ -280,6 +280,37 @@ TEST_F(TextureLoader, UndecodableFile) {
     EXPECT_EQ(texel_byte(r->flat.scene.textures.at(0), 0, 0), glm::u8vec3(9, 9, 9));
 }
 
+TEST_F(TextureLoader, TruncatedFilesAreReportedNotDrawnBlack) {
+    // stb_image fills the missing end of a BMP, TGA or PPM with zeros and says it succeeded; a
+    // texture cut short must be reported like any file that cannot be decoded.
+    const Picture pic = quadrant_picture(16);
+    struct Case {
+        const char* file;
+        bool (*write)(const std::string&, const Picture&);
+    };
+    const Case cases[] = {
+        {"t.png", write_png},
+        {"t.tga", write_tga},
+        {"t.ppm", write_ppm},
+        {"t.jpg", write_jpg},
+        {"t24.bmp", [](const std::string& p, const Picture& x) { return write_bmp(p, x, 24, false); }},
+        {"t32.bmp", [](const std::string& p, const Picture& x) { return write_bmp(p, x, 32, true); }},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.file);
+        const std::string path = dir_ + "/" + c.file;
+        ASSERT_TRUE(c.write(path, pic));
+        auto whole = load_names({c.file}, scene_);
+        ASSERT_TRUE(whole->missing.empty()) << whole->messages();
+        // Cut off the last 40%: the header is intact, the pixels are not all there.
+        fs::resize_file(path, fs::file_size(path) * 6 / 10);
+        auto cut = load_names({c.file}, scene_);
+        ASSERT_EQ(cut->missing.size(), 1u) << cut->messages();
+        EXPECT_NE(cut->missing[0].reason.find("cannot decode"), std::string::npos) << cut->missing[0].reason;
+        EXPECT_TRUE(has_errors(cut->diagnostics));
+    }
+}
+
 TEST_F(TextureLoader, CheckerFallback) {
     TextureOptions options;
     options.missing = MissingTexturePolicy::Checker;
