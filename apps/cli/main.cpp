@@ -1,5 +1,6 @@
 // whitted: the command-line renderer. Scene file in, image file out.
-// Exit codes: 0 success, 1 bad usage, 2 bad scene, 3 I/O failure, 130 interrupted.
+// Exit codes: 0 success, 1 bad usage, 2 bad scene, 3 I/O failure (the scene cannot be read, the
+// image cannot be written, out of memory), 130 interrupted.
 #include <unistd.h>
 
 #include <cstdio>
@@ -32,10 +33,23 @@ std::string default_output(const std::string& scene, bool is_showcase) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+// True when writing `output` would replace the scene file itself (`whitted scene.png`).
+bool same_file(const std::string& a, const std::string& b) {
+    std::error_code ec;
+    return std::filesystem::equivalent(a, b, ec) && !ec;
+}
+
+// Warnings printed before the rest are only counted: a file with 100,000 stray brackets
+// should not bury its one real message.
+constexpr int kMaxWarningsShown = 50;
+
+int run(int argc, char** argv) {
     using namespace whitted;
     CLI::App app{"whitted: a Whitted-style ray tracer for SceneView/Ray .sc scene files"};
     app.set_version_flag("--version", "whitted 0.1.0");
+    app.option_defaults()->always_capture_default();
+    app.footer("Exit codes: 0 done, 1 bad usage, 2 bad scene (FILE:LINE:COL: error: ...), 3 I/O failure, "
+               "130 interrupted (the part rendered so far is written).");
     std::string scene_path, output, mode_name = "whitted", missing = "error";
     int width = 640, height = 480, max_depth = 5, aa = 1, threads = 0;
     bool lenient = false, quiet = false, stats = false;
@@ -50,7 +64,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, kMaxAa));
     app.add_option("--mode", mode_name, "Render mode")->check(CLI::IsMember({"whitted", "raycast", "normals", "depth"}));
     app.add_option("--threads", threads, "Worker threads (0 = all hardware threads)")->check(CLI::Range(0, 1024));
-    app.add_option("--texture-path", texture_dirs, "Extra directory to look for textures in (repeatable)");
+    app.add_option("--texture-path", texture_dirs, "Extra directory to look for textures in (repeatable)")
+        ->default_str("");
     app.add_option("--missing-textures", missing, "What to do with a texture that cannot be loaded")
         ->check(CLI::IsMember({"error", "checker"}));
     app.add_flag("--lenient", lenient, "Skip unknown keywords and object types with a warning instead of failing");
@@ -70,6 +85,10 @@ int main(int argc, char** argv) {
         std::cerr << "whitted: error: cannot write '" << output << "': use .png, .bmp, .ppm, .jpg or .jpeg\n";
         return kExitUsage;
     }
+    if (same_file(output, scene_path)) {
+        std::cerr << "whitted: error: the output '" << output << "' is the scene file itself; name another with -o\n";
+        return kExitUsage;
+    }
 
     cli::install_interrupt_handler();  // from here on Ctrl-C stops the load or the render
     LoadOptions load_options;
@@ -79,7 +98,11 @@ int main(int argc, char** argv) {
     load_options.textures.search_dirs = texture_dirs;
     load_options.textures.missing = missing == "checker" ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
     LoadResult loaded = load_scene(scene_path, load_options);
-    for (const Diagnostic& d : loaded.diagnostics) std::cerr << d.str() << "\n";
+    int warnings = 0;
+    for (const Diagnostic& d : loaded.diagnostics)
+        if (d.severity == Severity::Error || ++warnings <= kMaxWarningsShown) std::cerr << d.str() << "\n";
+    if (warnings > kMaxWarningsShown)
+        std::cerr << "whitted: " << warnings - kMaxWarningsShown << " more warnings not shown\n";
     if (loaded.cancelled) {
         std::cerr << "whitted: interrupted while loading the scene: nothing written\n";
         return kExitInterrupted;
@@ -88,7 +111,7 @@ int main(int argc, char** argv) {
         if (!loaded.missing_textures.empty() && missing == "error")
             std::cerr << "whitted: use --texture-path DIR to add a place to look, or --missing-textures=checker to "
                          "render without them\n";
-        return kExitScene;
+        return loaded.unreadable ? kExitIo : kExitScene;
     }
 
     RenderOptions options;
@@ -130,4 +153,15 @@ int main(int argc, char** argv) {
     }
     if (!quiet) std::cerr << "wrote " << output << "\n";
     return 0;
+}
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "whitted: error: out of memory (a smaller image or scene may fit)\n";
+    } catch (const std::exception& e) {
+        std::cerr << "whitted: error: " << e.what() << "\n";
+    }
+    return kExitIo;
 }

@@ -173,7 +173,9 @@ void build_subtree(std::vector<PrimRef>& refs, const Task& root, std::vector<Bin
             const float lo = centres.lo[axis];
             const float scale = kBins / ext[axis];
             auto bin_of = [&](const PrimRef& r) {
-                return std::min(kBins - 1, static_cast<int>((centre(r) - lo) * scale));
+                // Written so that a non-finite position (which flatten refuses) still lands in a bin.
+                const float f = (centre(r) - lo) * scale;
+                return f < float(kBins - 1) ? (f > 0.0f ? static_cast<int>(f) : 0) : kBins - 1;
             };
             for (std::uint32_t i = task.begin; i < task.end; ++i) {
                 const PrimRef& r = refs[i];

@@ -3,10 +3,37 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <string_view>
+#include <utility>
 #include <unordered_map>
+
+#include "parse/transforms.h"
 
 namespace whitted {
 namespace {
+
+// World coordinates beyond this are refused: the acceleration structure adds and scales
+// bounds, and offsets secondary rays relative to the hit point, which float cannot do near 1e38.
+constexpr double kMaxWorldCoordinate = 1e30;
+
+// Why float arithmetic cannot carry the composed object→world matrix, or "" when it can. Each
+// trans block was checked alone by the parser; a chain of them can still overflow (ten nested
+// `scale 1e5`), collapse (ten nested `scale 1e-5`) or carry an object out of range.
+std::string unusable_transform(const glm::dmat4& world) {
+    double reach = 0;  // how far the object's bounding cube extends from its centre, per axis
+    for (int r = 0; r < 3; ++r) {
+        const double half = 0.5 * (std::abs(world[0][r]) + std::abs(world[1][r]) + std::abs(world[2][r]));
+        reach = std::max(reach, std::abs(world[3][r]) + half);
+    }
+    if (!(reach <= kMaxWorldCoordinate))
+        return "the transforms down to this object, composed, put it more than 1e30 from the origin, beyond what "
+               "float arithmetic can trace: scale or move the scene toward the origin";
+    if (is_singular(glm::mat4(world)))
+        return "the transforms down to this object, composed, are singular in float (their scales multiply down to "
+               "nothing): scale the scene up";
+    return "";
+}
 
 Material to_material(const MaterialDesc& m) {
     Material out;
@@ -39,36 +66,70 @@ Light to_light(const LightDesc& l) {
     return out;
 }
 
+// Name → index of every mastersubgraph, built once (a file may hold thousands, each referenced
+// many times).
+using SubgraphIndex = std::unordered_map<std::string_view, int>;
+SubgraphIndex index_subgraphs(const SceneDescription& d) {
+    SubgraphIndex index;
+    for (std::size_t i = 0; i < d.subgraphs.size(); ++i) index.emplace(d.subgraphs[i].name, int(i));
+    return index;
+}
+int find(const SubgraphIndex& index, const std::string& name) {
+    auto it = index.find(name);
+    return it == index.end() ? -1 : it->second;
+}
+
 // Number of instances each subgraph expands to, saturating instead of overflowing.
 class InstanceCounter {
 public:
-    explicit InstanceCounter(const SceneDescription& d) : desc_(d), memo_(d.subgraphs.size(), kUnknown) {}
+    InstanceCounter(const SceneDescription& d, const SubgraphIndex& index)
+        : desc_(d), index_(index), memo_(d.subgraphs.size(), kUnknown) {}
 
-    std::size_t count(int s) {
-        if (memo_[s] != kUnknown) return memo_[s];
-        std::size_t n = 0;
-        for (const TransDesc& t : desc_.subgraphs[s].children) {
-            n = add(n, t.objects.size());
-            for (const SubgraphRef& ref : t.subgraphs) {
-                int child = desc_.find_subgraph(ref.name);
-                if (child >= 0) n = add(n, count(child));  // the parser guarantees no cycles
+    // Children before parents, with an explicit stack: a chain of subgraphs may be 100,000 long.
+    // The parser guarantees there are no cycles.
+    std::size_t count(int root) {
+        std::vector<std::pair<int, bool>> stack{{root, false}};  // subgraph, children pushed
+        while (!stack.empty()) {
+            auto [s, expanded] = stack.back();
+            if (memo_[s] != kUnknown) {
+                stack.pop_back();
+                continue;
             }
+            if (!expanded) {
+                stack.back().second = true;
+                for_each_child(s, [&](int child) {
+                    if (memo_[child] == kUnknown) stack.push_back({child, false});
+                });
+                continue;
+            }
+            stack.pop_back();
+            std::size_t n = 0;
+            for (const TransDesc& t : desc_.subgraphs[s].children) n = add(n, t.objects.size());
+            for_each_child(s, [&](int child) { n = add(n, memo_[child]); });
+            memo_[s] = n;
         }
-        return memo_[s] = n;
+        return memo_[root];
     }
 
 private:
+    template <class F>
+    void for_each_child(int s, F&& f) const {
+        for (const TransDesc& t : desc_.subgraphs[s].children)
+            for (const SubgraphRef& ref : t.subgraphs)
+                if (int child = find(index_, ref.name); child >= 0) f(child);
+    }
     static constexpr std::size_t kUnknown = std::numeric_limits<std::size_t>::max();
     static std::size_t add(std::size_t a, std::size_t b) { return a > kUnknown - 1 - b ? kUnknown - 1 : a + b; }
     const SceneDescription& desc_;
+    const SubgraphIndex& index_;
     std::vector<std::size_t> memo_;
 };
 
 }  // namespace
 
-Instance make_instance(const glm::mat4& object_to_world, ShapeKind kind, std::uint32_t material) {
+Instance make_instance(const glm::dmat4& object_to_world, ShapeKind kind, std::uint32_t material) {
     // Invert in double: deep hierarchies of small scales lose precision fast in float.
-    glm::dmat4 inv = glm::inverse(glm::dmat4(object_to_world));
+    glm::dmat4 inv = glm::inverse(object_to_world);
     Instance inst{};
     for (int r = 0; r < 3; ++r)
         inst.world_to_object[r] = glm::vec4(float(inv[0][r]), float(inv[1][r]), float(inv[2][r]), float(inv[3][r]));
@@ -102,7 +163,8 @@ FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances) {
         return result;
     }
 
-    InstanceCounter counter(desc);
+    const SubgraphIndex index = index_subgraphs(desc);
+    InstanceCounter counter(desc, index);
     std::size_t total = counter.count(desc.root);
     if (total > max_instances) {
         result.diagnostics.push_back(
@@ -126,20 +188,27 @@ FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances) {
 
     // Depth-first walk with an explicit stack: a long chain of subgraphs must not overflow
     // the call stack. world = M(root's trans) · … · M(leaf trans) (spec §3).
+    // Composed in double, so that long chains lose no precision before the single rounding.
     struct Frame {
         int subgraph;
-        glm::mat4 parent;
+        glm::dmat4 parent;
     };
-    std::vector<Frame> stack{{desc.root, glm::mat4(1.0f)}};
+    std::vector<Frame> stack{{desc.root, glm::dmat4(1.0)}};
     while (!stack.empty()) {
         Frame f = stack.back();
         stack.pop_back();
         for (const TransDesc& t : desc.subgraphs[f.subgraph].children) {
-            glm::mat4 world = f.parent * t.matrix;
-            for (const ObjectDesc& o : t.objects) scene.instances.push_back(make_instance(world, o.kind, material_index(o)));
+            const glm::dmat4 world = f.parent * glm::dmat4(t.matrix);
+            if (!t.objects.empty()) {
+                if (std::string why = unusable_transform(world); !why.empty()) {
+                    result.diagnostics.push_back({Severity::Error, t.objects.front().loc, why});
+                    return result;
+                }
+            }
+            for (const ObjectDesc& o : t.objects)
+                scene.instances.push_back(make_instance(world, o.kind, material_index(o)));
             for (const SubgraphRef& ref : t.subgraphs) {
-                int child = desc.find_subgraph(ref.name);
-                if (child >= 0) stack.push_back({child, world});
+                if (int child = find(index, ref.name); child >= 0) stack.push_back({child, world});
             }
         }
     }

@@ -25,7 +25,10 @@ FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances = 
 
 // An instance of the unit shape `kind` placed by `object_to_world` (affine, invertible): keeps
 // the three rows of its inverse that intersection needs.
-Instance make_instance(const glm::mat4& object_to_world, ShapeKind kind, std::uint32_t material);
+Instance make_instance(const glm::dmat4& object_to_world, ShapeKind kind, std::uint32_t material);
+inline Instance make_instance(const glm::mat4& object_to_world, ShapeKind kind, std::uint32_t material) {
+    return make_instance(glm::dmat4(object_to_world), kind, material);
+}
 
 // The camera basis of spec §5 for an image of the given aspect ratio (width / height).
 Camera make_camera(const CameraDesc& desc);

@@ -545,9 +545,16 @@ private:
         if (auto d = check_subgraph_cycles(scene_)) fail(d->loc, d->message);
         const auto root = subgraph_index_.find("root");
         scene_.root = root == subgraph_index_.end() ? -1 : root->second;
-        if (scene_.root < 0)
-            fail(SourceLoc{file_, 0, 0},
-                 "no 'mastersubgraph root' in the file: root is the scene and is required");
+        if (scene_.root < 0) {
+            // Reported at the top of the file, like an empty one: there is no one place to point at.
+            std::string defined;
+            for (std::size_t i = 0; i < scene_.subgraphs.size() && i < 5; ++i)
+                defined += (i ? ", '" : " (it defines '") + scene_.subgraphs[i].name + "'";
+            if (scene_.subgraphs.size() > 5) defined += ", ...";
+            if (!defined.empty()) defined += ")";
+            fail(SourceLoc{file_, 1, 1},
+                 "no 'mastersubgraph root' in the file" + defined + ": root is the scene and is required");
+        }
         if (auto d = check_camera(scene_.camera, camera_up_loc_, camera_view_loc_))
             fail(d->loc, d->message);
     }
@@ -565,6 +572,7 @@ ParseResult parse_scene_file(const std::string& path, const ParseOptions& option
     auto fail = [&](const std::string& why) {
         result.diagnostics.push_back(
             {Severity::Error, SourceLoc{path, 0, 0}, "cannot read scene file: " + why});
+        result.unreadable = true;
         return result;
     };
     std::error_code ec;

@@ -18,6 +18,7 @@ struct ParseOptions {
 struct ParseResult {
     SceneDescription scene;            // meaningful only when ok()
     std::vector<Diagnostic> diagnostics;  // warnings and errors in file order
+    bool unreadable = false;              // the file itself could not be read (an I/O failure)
     bool ok() const { return !has_errors(diagnostics); }
 };
 

@@ -16,6 +16,7 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
         return result.cancelled = options.cancel && options.cancel->load(std::memory_order_relaxed);
     };
     result.stats.parse_seconds = parse_seconds;
+    result.unreadable = parsed.unreadable;
     result.diagnostics = std::move(parsed.diagnostics);
     if (has_errors(result.diagnostics) || cancelled()) return result;
 

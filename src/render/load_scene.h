@@ -29,7 +29,8 @@ struct LoadResult {
     std::vector<Diagnostic> diagnostics;     // warnings and errors, in order
     std::vector<MissingTexture> missing_textures;  // also reported in diagnostics
     LoadStats stats;
-    bool cancelled = false;  // LoadOptions::cancel was set: no scene, no error
+    bool cancelled = false;   // LoadOptions::cancel was set: no scene, no error
+    bool unreadable = false;  // the scene file could not be read (an I/O failure, not a bad scene)
     bool ok() const { return scene != nullptr; }
 };
 

@@ -64,7 +64,37 @@ TEST(Cli, BadUsageExitsOne) {
     EXPECT_EQ(run_process({test::cli_path(), "x.sc", "-o", "out.gif"}).exit_code, 1);
     auto help = run_process({test::cli_path(), "--help"});
     EXPECT_EQ(help.exit_code, 0);
-    EXPECT_NE(help.output.find("--max-depth"), std::string::npos);
+    EXPECT_NE(help.output.find("--max-depth INT:INT in [0 - 1000]=5"), std::string::npos) << help.output;
+    EXPECT_NE(help.output.find("Exit codes: 0 done, 1 bad usage, 2 bad scene"), std::string::npos) << help.output;
+}
+
+TEST(Cli, RefusesToWriteTheImageOverTheSceneFile) {
+    // `whitted scene.png` would put the image next to the scene with its extension changed to
+    // .png: the scene itself.
+    std::string dir = test::make_temp_dir();
+    std::string scene = write_file(dir, "oops.png", kSimpleScene);
+    for (const std::vector<std::string>& args : {std::vector<std::string>{test::cli_path(), scene, "-q"},
+                                                 std::vector<std::string>{test::cli_path(), scene, "-o", scene, "-q"}}) {
+        auto r = run_process(args);
+        EXPECT_EQ(r.exit_code, 1) << r.output;
+        EXPECT_NE(r.output.find("is the scene file itself"), std::string::npos) << r.output;
+        std::ifstream in(scene, std::ios::binary);
+        EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), kSimpleScene);
+    }
+}
+
+TEST(Cli, ThousandsOfWarningsAreCountedNotAllPrinted) {
+    std::string dir = test::make_temp_dir();
+    std::string text = "mastersubgraph root [ trans [ object sphere [ ] ] ]\n";
+    for (int i = 0; i < 1000; ++i) text += "[\n";  // a stray '[' is skipped with a warning
+    std::string scene = write_file(dir, "brackets.sc", text);
+    auto r = run_process({test::cli_path(), scene, "-o", dir + "/b.png", "--width", "8", "--height", "8", "-q"});
+    EXPECT_EQ(r.exit_code, 0) << r.output.substr(0, 500);
+    std::size_t shown = 0;
+    for (std::size_t at = 0; (at = r.output.find(": warning: ", at)) != std::string::npos; ++at) ++shown;
+    EXPECT_EQ(shown, 50u);
+    EXPECT_NE(r.output.find("brackets.sc:2:1: warning: "), std::string::npos) << r.output.substr(0, 500);
+    EXPECT_NE(r.output.find("whitted: 950 more warnings not shown"), std::string::npos) << r.output.substr(r.output.size() - 300);
 }
 
 TEST(Cli, AntiAliasingSmoothsTheBallsOutline) {
@@ -97,7 +127,12 @@ TEST(Cli, BadSceneExitsTwoWithALocatedError) {
     EXPECT_NE(r.output.find(scene + ":3:"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("error:"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(dir + "/bad.png"));
-    EXPECT_EQ(run_process({test::cli_path(), dir + "/missing.sc", "-q"}).exit_code, 2);
+    // A scene file that cannot be read at all is an I/O failure, not a bad scene.
+    auto missing = run_process({test::cli_path(), dir + "/missing.sc", "-q"});
+    EXPECT_EQ(missing.exit_code, 3);
+    EXPECT_NE(missing.output.find(dir + "/missing.sc: error: cannot read scene file: No such file"), std::string::npos)
+        << missing.output;
+    EXPECT_EQ(run_process({test::cli_path(), dir, "-o", dir + "/d.png", "-q"}).exit_code, 3);
 }
 
 TEST(Cli, UnwritableOutputExitsThreeAndLeavesNoFile) {

@@ -7,6 +7,8 @@
 
 #include "accel/instance_geometry.h"
 #include "flatten/flatten.h"
+#include "integrator/light_sample.h"
+#include "render/load_scene.h"
 
 namespace whitted {
 namespace {
@@ -93,6 +95,29 @@ TEST(Flatten, RefusesInstancingThatExplodes) {
     EXPECT_NE(r.diagnostics[0].message.find("1099511627776"), std::string::npos) << r.diagnostics[0].message;
 }
 
+TEST(Flatten, AChainOfAHundredThousandSubgraphs) {
+    // root -> s1 -> … -> s100000, each moving one step up x: one sphere at x = 100000. Counting
+    // and expanding walk it without recursion (the call stack would not hold it under the
+    // sanitizers) and find each name without a scan of all the others.
+    constexpr int kDepth = 100'000;
+    SceneDescription d;
+    d.path = "chain.sc";
+    auto name = [](int i) { return i == 0 ? std::string("root") : std::string("s").append(std::to_string(i)); };
+    for (int i = 0; i <= kDepth; ++i) {
+        SubgraphDesc s{name(i), {}, {}};
+        TransDesc t = trans(i == 0 ? glm::mat4(1.0f) : glm::translate(glm::mat4(1.0f), {1, 0, 0}));
+        if (i < kDepth) t.subgraphs = {{name(i + 1), {}}};
+        else t.objects.push_back({ShapeKind::Sphere, {}, {}});
+        s.children.push_back(t);
+        d.subgraphs.push_back(s);
+    }
+    d.root = 0;
+    FlattenResult r = flatten(d);
+    ASSERT_TRUE(r.ok()) << r.diagnostics[0].message;
+    ASSERT_EQ(r.scene.instances.size(), 1u);
+    expect_vec(to_world(r.scene.instances[0], {0, 0, 0}), {float(kDepth), 0, 0});
+}
+
 TEST(Flatten, InverseTransposeBringsNormalsBack) {
     // Under scale (4, 1, 1) a sphere's normal at object point (0.5,0.5,0)/√2·… : take the object
     // normal (1,1,0)/√2; (M⁻¹)ᵀ scales x by 1/4, giving (1/4, 1, 0) normalised.
@@ -108,6 +133,31 @@ TEST(Flatten, InverseTransposeBringsNormalsBack) {
     ASSERT_TRUE(r.ok());
     expect_vec(normal_to_world(r.scene.instances[0], glm::normalize(glm::vec3(1, 1, 0))),
                glm::normalize(glm::vec3(0.25f, 1, 0)));
+}
+
+TEST(Flatten, SpotlightFromTheFileLightsInsideItsApertureOnly) {
+    // A spot 5 above the floor pointing down, half-angle 30°, exponent 0 (no fall-off inside):
+    // a floor point at x = 5·tan θ is lit for θ = 29° and dark for θ = 31°. Direction written
+    // unnormalised; colour 1, attenuation 1/(1 + 0·d + 0·d²).
+    LoadResult r = load_scene_text(
+        "light [ type spotlight position 0 5 0 direction 0 -3 0 aperture 30 exponent 0 color 1 1 1 ]\n"
+        "mastersubgraph root [ trans [ object sphere [ ] ] ]\n",
+        "spot.sc");
+    ASSERT_TRUE(r.ok()) << r.diagnostics[0].str();
+    const Light& spot = r.scene->flat.lights.at(0);
+    EXPECT_NEAR(spot.cos_aperture, std::cos(glm::radians(30.0f)), 1e-6f);
+    expect_vec(spot.direction, {0, -1, 0});
+    const float inside = 5.0f * std::tan(glm::radians(29.0f)), outside = 5.0f * std::tan(glm::radians(31.0f));
+    expect_vec(sample_light(spot, {inside, 0, 0}).intensity, glm::vec3(1.0f));
+    expect_vec(sample_light(spot, {outside, 0, 0}).intensity, glm::vec3(0.0f));
+    // Exponent 2 inside the cone: cos²θ at 20°.
+    r = load_scene_text("light [ type spotlight position 0 5 0 direction 0 -1 0 aperture 30 exponent 2 color 1 1 1 ]\n"
+                        "mastersubgraph root [ trans [ object sphere [ ] ] ]\n",
+                        "spot.sc");
+    ASSERT_TRUE(r.ok());
+    const float c20 = std::cos(glm::radians(20.0f));
+    expect_vec(sample_light(r.scene->flat.lights.at(0), {5.0f * std::tan(glm::radians(20.0f)), 0, 0}).intensity,
+               glm::vec3(c20 * c20));
 }
 
 TEST(Camera, OrthonormalisesUpAndUsesFocus) {

@@ -59,8 +59,9 @@ TEST(ParseStructure, RootIsRequired) {
     const Diagnostic* e = parse_test::first_error(r);
     ASSERT_NE(e, nullptr);
     EXPECT_EQ(e->loc.file, "t.sc");
-    EXPECT_EQ(e->loc.line, 0);
-    EXPECT_NE(e->message.find("mastersubgraph root"), std::string::npos);
+    EXPECT_EQ(e->loc.line, 1);
+    EXPECT_EQ(e->loc.col, 1);
+    EXPECT_EQ(e->message, "no 'mastersubgraph root' in the file (it defines 'a'): root is the scene and is required");
     EXPECT_FALSE(parse("mastersubgraph Root [ ]").ok());  // names are case-sensitive
 }
 
