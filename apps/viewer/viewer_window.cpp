@@ -17,9 +17,9 @@
 #include <FL/Fl_Choice.H>
 #include <FL/Fl_Menu_Bar.H>
 #include <FL/Fl_Native_File_Chooser.H>
+#include <FL/Fl_Return_Button.H>
 #include <FL/Fl_Scroll.H>
 #include <FL/Fl_Spinner.H>
-#include <FL/fl_ask.H>
 #include <FL/fl_draw.H>
 #include <FL/x.H>
 
@@ -37,6 +37,13 @@ constexpr const char* kModes[] = {"whitted", "raycast", "normals", "depth"};
 
 std::string base_name(const std::string& path) { return fs::path(path).filename().string(); }
 
+// Errors and warnings are coloured in the status bar and also listed in the messages panel.
+Fl_Color message_color(const std::string& msg) {
+    if (msg.find("error:") != std::string::npos) return FL_RED;
+    if (msg.find("warning:") != std::string::npos) return FL_DARK_YELLOW;
+    return FL_FOREGROUND_COLOR;
+}
+
 // A diagnostic's text may run over several lines (e.g. the paths a texture was looked for at).
 std::vector<std::string> split_lines(const std::string& text) {
     std::vector<std::string> lines;
@@ -45,6 +52,45 @@ std::vector<std::string> split_lines(const std::string& text) {
         lines.push_back(text.substr(start, nl - start));
     lines.push_back(text.substr(start));
     return lines;
+}
+
+// Asks whether to pick the file for a texture that was not found, listing every path tried (in a
+// browser, which scrolls when there are many). 1 = choose a file, 0 = use the checkerboard.
+int ask_texture_dialog(const MissingTexture& mt, const std::string& where, const Fl_Window& parent) {
+    const int W = 640, line_h = 17, rows = std::clamp(int(mt.tried.size()), 2, 14);
+    const std::string about = "The texture \"" + mt.name + "\" (" + where + ") could not be loaded: " + mt.reason +
+                              ".\n\nLooked at " + std::to_string(mt.tried.size()) +
+                              (mt.tried.size() == 1 ? " place:" : " places:");
+    int text_w = W - 20, text_h = 0;
+    fl_font(FL_HELVETICA, FL_NORMAL_SIZE);
+    fl_measure(about.c_str(), text_w, text_h);  // wrapped at the dialog's width
+    const int list_y = 10 + text_h + 6, list_h = rows * line_h + 6, question_y = list_y + list_h + 6;
+    Fl_Double_Window dlg(W, question_y + 24 + 50, "Texture not found");
+    auto* text = new Fl_Box(10, 10, W - 20, text_h);
+    text->align(FL_ALIGN_LEFT | FL_ALIGN_TOP | FL_ALIGN_INSIDE | FL_ALIGN_WRAP);
+    text->copy_label(about.c_str());
+    auto* list = new Fl_Browser(10, list_y, W - 20, list_h);
+    list->textfont(FL_COURIER);
+    list->textsize(13);
+    for (const std::string& p : mt.tried) list->add(("@." + p).c_str());
+    auto* question = new Fl_Box(10, question_y, W - 20, 24, "Choose the image file to use for it?");
+    question->align(FL_ALIGN_LEFT | FL_ALIGN_INSIDE);
+    int answer = 0;
+    auto* cancel = new Fl_Button(W - 340, dlg.h() - 38, 180, 28, "Cancel (checkerboard)");
+    auto* choose = new Fl_Return_Button(W - 150, dlg.h() - 38, 140, 28, "Choose file...");
+    cancel->callback([](Fl_Widget* b, void*) { b->window()->hide(); });
+    choose->callback([](Fl_Widget* b, void* a) {
+        *static_cast<int*>(a) = 1;
+        b->window()->hide();
+    }, &answer);
+    dlg.end();
+    dlg.resizable(list);
+    dlg.set_modal();
+    dlg.position(parent.x() + (parent.w() - dlg.w()) / 2, parent.y() + std::max(0, (parent.h() - dlg.h()) / 2));
+    dlg.show();
+    // Ends when a button or Escape closes it, or when quitting hides every window.
+    while (dlg.shown()) Fl::wait();
+    return answer;
 }
 
 }  // namespace
@@ -101,28 +147,38 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     menu_->add("&Render/&Stop", FL_Escape, [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->stop(); }, this);
 
     // Tool bar: the render controls. Changing one and pressing Render uses it.
-    int x = 6, y = kMenuH + 5, h = 24;
-    render_button_ = new Fl_Button(x, y, 70, h, "Render");
+    // Made at their final sizes; layout() places them left to right.
+    const int h = 24;
+    auto tool = [this](Fl_Widget* w, const char* id, int gap) {
+        const Fl_Align a = w->align();
+        int lw = 0, lh = 0;
+        if ((a & FL_ALIGN_LEFT) && !(a & FL_ALIGN_INSIDE)) {  // a label drawn to its left needs room
+            w->measure_label(lw, lh);
+            lw += 5;
+        }
+        tools_.push_back({w, id, gap, lw, w->w(), w->h()});
+    };
+    render_button_ = new Fl_Button(0, 0, 70, h, "Render");
     render_button_->callback([](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->render(); }, this);
     render_button_->tooltip("Render with these settings (F5)");
-    x += 74;
-    stop_button_ = new Fl_Button(x, y, 56, h, "Stop");
+    tool(render_button_, "render", 0);
+    stop_button_ = new Fl_Button(0, 0, 56, h, "Stop");
     stop_button_->callback([](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->stop(); }, this);
     stop_button_->tooltip("Stop rendering, keeping what is done (Esc)");
-    x += 56 + 48;
-    auto spinner = [&](const char* label, int lw, int sw, int lo, int hi, int value, const char* tip) {
-        auto* s = new Fl_Spinner(x + lw, y, sw, h, label);
+    tool(stop_button_, "stop", 4);
+    auto spinner = [&](const char* id, const char* label, int gap, int sw, int lo, int hi, int value, const char* tip) {
+        auto* s = new Fl_Spinner(0, 0, sw, h, label);
         s->type(FL_INT_INPUT);
         s->range(lo, hi);
         s->step(1);
         s->value(value);
         s->tooltip(tip);
-        x += lw + sw + 10;
+        tool(s, id, gap);
         return s;
     };
-    width_ = spinner("Width", 0, 70, 1, 32768, options.settings.width, "Image width in pixels");
-    height_ = spinner("Height", 46, 70, 1, 32768, options.settings.height, "Image height in pixels");
-    fit_ = new Fl_Check_Button(x, y, 100, h, "Fit window");
+    width_ = spinner("width", "Width", 16, 70, 1, 32768, options.settings.width, "Image width in pixels");
+    height_ = spinner("height", "Height", 10, 70, 1, 32768, options.settings.height, "Image height in pixels");
+    fit_ = new Fl_Check_Button(0, 0, 100, h, "Fit window");
     fit_->value(options.fit_window);
     fit_->tooltip("Render at the size of the image area");
     fit_->callback([](Fl_Widget* w, void* v) {
@@ -132,19 +188,19 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
         else self->width_->activate(), self->height_->activate();
     }, this);
     fit_->do_callback();
-    x += 108;
-    depth_ = spinner("Depth", 44, 52, 0, 1000, options.settings.max_depth,
+    tool(fit_, "fit", 10);
+    depth_ = spinner("depth", "Depth", 8, 52, 0, 1000, options.settings.max_depth,
                      "Recursion limit for reflection and refraction (the camera ray is depth 0)");
-    mode_ = new Fl_Choice(x + 40, y, 90, h, "Mode");
+    mode_ = new Fl_Choice(0, 0, 90, h, "Mode");
     for (const char* m : kModes) mode_->add(m);
     mode_->value(int(options.settings.mode));
     mode_->tooltip("whitted: full lighting; raycast: unlit colour; normals, depth: debugging views");
-    x += 40 + 90 + 10;
-    aa_ = spinner("AA", 28, 44, 1, kMaxAa, options.settings.aa,
+    tool(mode_, "mode", 10);
+    aa_ = spinner("aa", "AA", 10, 44, 1, kMaxAa, options.settings.aa,
                   "Anti-aliasing: N x N rays per pixel, averaged (1 = one ray through the pixel centre)");
     const int hw = int(std::max(1u, std::thread::hardware_concurrency()));
-    threads_ = spinner("Threads", 56, 52, 1, 1024, options.settings.threads > 0 ? options.settings.threads : hw,
-                       "Worker threads");
+    threads_ = spinner("threads", "Threads", 10, 52, 1, 1024,
+                       options.settings.threads > 0 ? options.settings.threads : hw, "Worker threads");
 
     scroll_ = new Fl_Scroll(0, kMenuH + kToolH, W, 100);
     scroll_->box(FL_FLAT_BOX);
@@ -168,8 +224,8 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     resizable(this);  // our resize() lays the children out itself
     size_range(520, 300);
     callback([](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->quit(); }, this);
-    layout();
     scene_box_->copy_label(" no scene: File > Open");
+    layout();
 
     Fl::add_timeout(0.1, poll_cb, this);
     Fl::add_timeout(1.0, watch_cb, this);
@@ -180,17 +236,20 @@ ViewerWindow::~ViewerWindow() {
     Fl::remove_timeout(poll_cb, this);
     Fl::remove_timeout(watch_cb, this);
     Fl::remove_timeout(done_cb, this);
+    Fl::remove_timeout(ready_cb, this);
     controller_.stop();
 }
 
 void ViewerWindow::resize(int X, int Y, int W, int H) {
     Fl_Double_Window::resize(X, Y, W, H);
     layout();  // places the children exactly (Fl_Group only scales them)
+    rewrite_ready_file_soon();
 }
 
 void ViewerWindow::layout() {
     const int W = w(), H = h();
     menu_->resize(0, 0, W, kMenuH);
+    layout_toolbar();
     const int msg_h = show_messages_ ? kMessagesH : 0;
     const int top = kMenuH + kToolH, bottom = H - kStatusH - msg_h;
     scroll_->resize(0, top, W, std::max(10, bottom - top));
@@ -200,16 +259,45 @@ void ViewerWindow::layout() {
     } else {
         messages_->hide();
     }
-    const int sw = std::min(260, W / 4), pw = std::min(340, W / 3);
-    scene_box_->resize(0, H - kStatusH, sw, kStatusH);
-    progress_box_->resize(sw, H - kStatusH, pw, kStatusH);
-    message_box_->resize(sw + pw, H - kStatusH, W - sw - pw, kStatusH);
+    layout_status();
     // The image widget is as big as the image, or as the visible area if that is bigger.
     const int vw = std::max(scroll_->w(), view_->image.width), vh = std::max(scroll_->h(), view_->image.height);
     view_->resize(scroll_->x() - scroll_->xposition(), scroll_->y() - scroll_->yposition(), vw, vh);
     scroll_->init_sizes();
     scroll_->redraw();
     redraw();
+}
+
+// Every tool at the size it was made at; those that no longer fit the window's width are hidden
+// (they come last, so the ones shown never move).
+void ViewerWindow::layout_toolbar() {
+    const int y = kMenuH + 5, right = w() - 6;
+    int x = 6;
+    for (const Tool& t : tools_) {
+        x += t.gap + t.label_w;
+        t.widget->resize(x, y, t.w, t.h);
+        if (x + t.w <= right) t.widget->show();
+        else t.widget->hide();
+        x += t.w;
+    }
+}
+
+// Scene, progress and message fields, each as wide as its text (the message takes the rest);
+// a field too narrow for its text clips it, and its tooltip has it all.
+void ViewerWindow::layout_status() {
+    auto needs = [](const Fl_Box* b) {
+        int tw = 0, th = 0;
+        b->measure_label(tw, th);
+        return tw + 10;  // the box's border and the label's margins
+    };
+    const int W = w(), y = h() - kStatusH;
+    const int sw = std::min(needs(scene_box_), W / 3);
+    // The progress text may take the message's room only while there is no message.
+    const int pw = std::max(0, std::min(needs(progress_box_), W - sw - std::min(needs(message_box_), W / 3)));
+    scene_box_->resize(0, y, sw, kStatusH);
+    progress_box_->resize(sw, y, pw, kStatusH);
+    message_box_->resize(sw + pw, y, W - sw - pw, kStatusH);
+    for (Fl_Box* b : {scene_box_, progress_box_, message_box_}) b->redraw();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -277,9 +365,14 @@ void ViewerWindow::quit() {
     Fl::add_timeout(0.02, [](void*) {}, nullptr);
 }
 
-void ViewerWindow::set_message(const std::string& text) {
-    extra_message_ = text;
-    message_box_->copy_label((" " + text).c_str());
+// Shown in the status bar (and, if an error or warning, in the messages panel) at the next poll.
+void ViewerWindow::set_message(const std::string& text) { extra_message_ = text; }
+
+// The scene's folder, absolute (file choosers need that), or the current one without a scene.
+std::string ViewerWindow::scene_dir() const {
+    std::error_code ec;
+    fs::path dir = scene_.empty() ? fs::current_path(ec) : fs::absolute(scene_, ec).parent_path();
+    return dir.string();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -318,7 +411,7 @@ void ViewerWindow::poll() {
     else stop_button_->deactivate();
 
     update_status(st);
-    show_diagnostics(st);
+    show_messages(st);
 
     // The first render has ended: the hooks for tests and scripts, once it is on screen.
     // (Automated runs never open dialogs: a missing texture ends them like a scene error.)
@@ -342,77 +435,89 @@ void ViewerWindow::poll() {
 }
 
 void ViewerWindow::update_status(const RenderStatus& st) {
-    std::string scene(" ");
-    scene += scene_.empty() ? std::string("no scene: File > Open") : base_name(scene_);
+    std::string stats;
     if (st.load_stats.objects || st.load_stats.lights || st.state == RenderState::Rendering ||
         st.state == RenderState::Finished)
-        scene += ": " + std::to_string(st.load_stats.objects) + " objects, " + std::to_string(st.load_stats.lights) +
-                 (st.load_stats.lights == 1 ? " light" : " lights");
-    if (scene != (scene_box_->label() ? scene_box_->label() : "")) scene_box_->copy_label(scene.c_str());
+        stats = ": " + std::to_string(st.load_stats.objects) + " objects, " + std::to_string(st.load_stats.lights) +
+                (st.load_stats.lights == 1 ? " light" : " lights");
 
     char buf[200];
     const int pct = st.tiles_total ? int(100.0 * st.tiles_done / st.tiles_total) : 0;
     switch (st.state) {
-        case RenderState::Idle: std::snprintf(buf, sizeof buf, " ready"); break;
-        case RenderState::Loading: std::snprintf(buf, sizeof buf, " loading... %.1f s", st.elapsed_seconds); break;
+        case RenderState::Idle: std::snprintf(buf, sizeof buf, "ready"); break;
+        case RenderState::Loading: std::snprintf(buf, sizeof buf, "loading... %.1f s", st.elapsed_seconds); break;
         case RenderState::Rendering:
-            std::snprintf(buf, sizeof buf, " rendering %d×%d: %d%% (%d/%d tiles), %.1f s", st.settings.width,
+            std::snprintf(buf, sizeof buf, "rendering %d×%d: %d%% (%d/%d tiles), %.1f s", st.settings.width,
                           st.settings.height, pct, st.tiles_done, st.tiles_total, st.elapsed_seconds);
             break;
         case RenderState::Finished:
-            std::snprintf(buf, sizeof buf, " done %d×%d in %.2f s", st.settings.width, st.settings.height,
+            std::snprintf(buf, sizeof buf, "done %d×%d in %.2f s", st.settings.width, st.settings.height,
                           st.elapsed_seconds);
             break;
         case RenderState::Stopped:
-            std::snprintf(buf, sizeof buf, " stopped at %d%% (%d/%d tiles), %.1f s", pct, st.tiles_done,
+            std::snprintf(buf, sizeof buf, "stopped at %d%% (%d/%d tiles), %.1f s", pct, st.tiles_done,
                           st.tiles_total, st.elapsed_seconds);
             break;
-        case RenderState::Failed: std::snprintf(buf, sizeof buf, " the scene has errors"); break;
-        case RenderState::MissingTextures: std::snprintf(buf, sizeof buf, " textures not found"); break;
+        case RenderState::Failed: std::snprintf(buf, sizeof buf, "the scene has errors"); break;
+        case RenderState::MissingTextures: std::snprintf(buf, sizeof buf, "textures not found"); break;
     }
-    if (std::string(buf) != (progress_box_->label() ? progress_box_->label() : ""))
-        progress_box_->copy_label(buf);
 
-    std::string msg = split_lines(extra_message_.empty() ? st.message : extra_message_).front();
-    Fl_Color c = FL_FOREGROUND_COLOR;
-    if (msg.find("error:") != std::string::npos) c = FL_RED;
-    else if (msg.find("warning:") != std::string::npos) c = FL_DARK_YELLOW;
-    msg.insert(0, 1, ' ');
-    if (msg != (message_box_->label() ? message_box_->label() : "") || c != message_box_->labelcolor()) {
-        message_box_->copy_label(msg.c_str());
-        message_box_->labelcolor(c);
-        message_box_->redraw();
-    }
+    const std::string& msg = extra_message_.empty() ? st.message : extra_message_;
+    // Sets a field's text (first line; " " keeps it off the border), colour and tooltip (all of it).
+    auto set = [](Fl_Box* b, const std::string& text, const std::string& tip, Fl_Color c) {
+        const std::string label = " " + split_lines(text).front();
+        if (label == (b->label() ? b->label() : "") && tip == (b->tooltip() ? b->tooltip() : "") &&
+            c == b->labelcolor())
+            return false;
+        b->copy_label(label.c_str());
+        b->copy_tooltip(tip.empty() ? nullptr : tip.c_str());
+        b->labelcolor(c);
+        return true;
+    };
+    bool changed = scene_.empty() ? set(scene_box_, "no scene: File > Open", "", FL_FOREGROUND_COLOR)
+                                  : set(scene_box_, base_name(scene_) + stats, scene_ + stats, FL_FOREGROUND_COLOR);
+    changed |= set(progress_box_, buf, buf, FL_FOREGROUND_COLOR);
+    changed |= set(message_box_, msg, msg, message_color(msg));
+    if (changed) layout_status();
 }
 
-void ViewerWindow::show_diagnostics(const RenderStatus& st) {
-    // Keep the previous messages while a new load runs, until it has its own.
-    if (st.state == RenderState::Loading || st.job == shown_diagnostics_job_) return;
-    shown_diagnostics_job_ = st.job;
-    messages_->clear();
-    for (const auto& d : st.diagnostics) {
-        // "@C<n>@." colours the line and makes the rest literal text.
-        Fl_Color c = d.severity == Severity::Error ? FL_RED : FL_DARK_YELLOW;
-        for (const std::string& line : split_lines(d.str()))
-            messages_->add(("@C" + std::to_string(int(c)) + "@." + line).c_str());
+void ViewerWindow::show_messages(const RenderStatus& st) {
+    // "@C<n>@." colours a line and makes the rest literal text.
+    auto coloured = [](const std::string& line, Fl_Color c) { return "@C" + std::to_string(int(c)) + "@." + line; };
+    // Keep the previous load's messages while a new load runs, until it has its own.
+    if (st.state != RenderState::Loading && st.job != shown_diagnostics_job_) {
+        shown_diagnostics_job_ = st.job;
+        diagnostic_lines_.clear();
+        for (const auto& d : st.diagnostics)
+            for (const std::string& line : split_lines(d.str()))
+                diagnostic_lines_.push_back(coloured(line, d.severity == Severity::Error ? FL_RED : FL_DARK_YELLOW));
+        // A failure without a diagnostic still has its message in the status bar.
+        if (st.diagnostics.empty() && message_color(st.message) != FL_FOREGROUND_COLOR)
+            diagnostic_lines_.push_back(coloured(st.message, message_color(st.message)));
     }
-    const bool want = !st.diagnostics.empty();
-    if (want != show_messages_) {
-        show_messages_ = want;
+    // The viewer's own errors and warnings (e.g. a failed save) go last.
+    std::vector<std::string> lines = diagnostic_lines_;
+    const bool own = message_color(extra_message_) != FL_FOREGROUND_COLOR;
+    if (own)
+        for (const std::string& line : split_lines(extra_message_))
+            lines.push_back(coloured(line, message_color(extra_message_)));
+    if (lines == message_lines_) return;
+    message_lines_ = lines;
+    messages_->clear();
+    for (const std::string& line : lines) messages_->add(line.c_str());
+    if (own) messages_->bottomline(messages_->size());
+    if (show_messages_ != !lines.empty()) {
+        show_messages_ = !lines.empty();
         layout();
     }
+    rewrite_ready_file_soon();
 }
 
 void ViewerWindow::ask_for_textures(const RenderStatus& st) {
     bool declined = false;
     for (const MissingTexture& mt : st.missing_textures) {
         std::string where = base_name(mt.loc.file.empty() ? scene_ : mt.loc.file) + " line " + std::to_string(mt.loc.line);
-        std::string tried;
-        for (std::size_t i = 0; i < mt.tried.size() && i < 4; ++i) tried += "\n    " + mt.tried[i];
-        int answer = fl_choice("The texture \"%s\" (%s) could not be loaded: %s.\nLooked at:%s\n\n"
-                               "Choose the image file to use for it?",
-                               "Cancel (checkerboard)", "Choose file...", nullptr, mt.name.c_str(), where.c_str(),
-                               mt.reason.c_str(), tried.c_str());
+        const int answer = ask_texture_dialog(mt, where, *this);
         if (quitting_) return;
         std::string picked;
         if (answer == 1) {
@@ -420,7 +525,7 @@ void ViewerWindow::ask_for_textures(const RenderStatus& st) {
             chooser.title(("Texture \"" + mt.name + "\"").c_str());
             chooser.type(Fl_Native_File_Chooser::BROWSE_FILE);
             chooser.filter("Images\t*.{bmp,png,jpg,jpeg,ppm,pgm,tga,gif,psd,hdr,pic}\nAll files\t*");
-            chooser.directory(fs::path(scene_).parent_path().string().c_str());
+            chooser.directory(scene_dir().c_str());
             if (chooser.show() == 0 && chooser.filename()) picked = chooser.filename();
         }
         if (quitting_) return;
@@ -453,7 +558,7 @@ void ViewerWindow::choose_and_open() {
     chooser.title("Open scene");
     chooser.type(Fl_Native_File_Chooser::BROWSE_FILE);
     chooser.filter("Scenes\t*.sc\nAll files\t*");
-    if (!scene_.empty()) chooser.directory(fs::path(scene_).parent_path().string().c_str());
+    chooser.directory(scene_dir().c_str());
     if (chooser.show() == 0 && chooser.filename()) open_scene(chooser.filename());
 }
 
@@ -468,6 +573,8 @@ void ViewerWindow::save_image_as() {
     chooser.type(Fl_Native_File_Chooser::BROWSE_SAVE_FILE);
     chooser.options(Fl_Native_File_Chooser::SAVEAS_CONFIRM | Fl_Native_File_Chooser::NEW_FOLDER);
     chooser.filter("PNG\t*.png\nBMP\t*.bmp\nPPM\t*.ppm\nJPEG\t*.{jpg,jpeg}");
+    // In the scene's folder, named after it.
+    chooser.directory(scene_dir().c_str());
     std::string suggested = scene_.empty() ? "image.png" : fs::path(scene_).stem().string() + ".png";
     chooser.preset_file(suggested.c_str());
     if (chooser.show() != 0 || !chooser.filename()) return;
@@ -495,19 +602,15 @@ void ViewerWindow::when_done() {
         for (const auto& d : st.diagnostics) std::fprintf(stderr, "%s\n", d.str().c_str());
     }
 
-    const int ix = view_->image_x(), iy = view_->image_y();
-    // The visible part of the image (window coordinates).
-    const int vx0 = std::max(ix, scroll_->x()), vy0 = std::max(iy, scroll_->y());
-    const int vx1 = std::min(ix + view_->image.width, scroll_->x() + scroll_->w());
-    const int vy1 = std::min(iy + view_->image.height, scroll_->y() + scroll_->h());
+    const Rect vis = visible_image();
     if (!options_.screenshot.empty()) {
         std::string err;
-        if (vx1 <= vx0 || vy1 <= vy0 || !view_->overlay.empty()) {
+        if (vis.w <= 0 || vis.h <= 0 || !view_->overlay.empty()) {
             err = "no image is shown";
         } else {
             make_current();
-            Image shot(vx1 - vx0, vy1 - vy0);
-            if (!fl_read_image(shot.rgb.data(), vx0, vy0, shot.width, shot.height)) err = "fl_read_image failed";
+            Image shot(vis.w, vis.h);
+            if (!fl_read_image(shot.rgb.data(), vis.x, vis.y, shot.width, shot.height)) err = "fl_read_image failed";
             else err = write_image(shot, options_.screenshot);
         }
         if (!err.empty()) {
@@ -516,19 +619,68 @@ void ViewerWindow::when_done() {
         }
     }
     if (!options_.ready_file.empty()) {
-        // Root-window coordinates: where a screen grab finds the window and the image.
-        std::string tmp = options_.ready_file + ".tmp";
-        {
-            std::ofstream out(tmp);
-            out << "state " << state_name(st.state) << "\n"
-                << "window " << x() << " " << y() << " " << w() << " " << h() << "\n"
-                << "image " << x() + vx0 << " " << y() + vy0 << " " << std::max(0, vx1 - vx0) << " "
-                << std::max(0, vy1 - vy0) << "\n";
-        }
-        std::error_code ec;
-        fs::rename(tmp, options_.ready_file, ec);
+        write_ready_file();
+        ready_written_ = true;
     }
     if (options_.exit_when_done) quit();
+}
+
+// The visible part of the image, in window coordinates.
+ViewerWindow::Rect ViewerWindow::visible_image() const {
+    const int ix = view_->image_x(), iy = view_->image_y();
+    const int x0 = std::max(ix, scroll_->x()), y0 = std::max(iy, scroll_->y());
+    const int x1 = std::min(ix + view_->image.width, scroll_->x() + scroll_->w());
+    const int y1 = std::min(iy + view_->image.height, scroll_->y() + scroll_->h());
+    return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+}
+
+// For tests and scripts. Geometry in root-window coordinates (where a screen grab finds things);
+// a tool's x and w include its label; a field "needs" the width its text takes.
+void ViewerWindow::write_ready_file() {
+    const RenderStatus st = controller_.status();
+    const Rect vis = visible_image();
+    const std::string tmp = options_.ready_file + ".tmp";
+    {
+        std::ofstream out(tmp);
+        out << "state " << state_name(st.state) << "\n"
+            << "window " << x() << " " << y() << " " << w() << " " << h() << "\n"
+            << "image " << x() + vis.x << " " << y() + vis.y << " " << vis.w << " " << vis.h << "\n";
+        for (const Tool& t : tools_) {
+            const Fl_Widget* tw = t.widget;
+            out << "tool " << t.id << " " << x() + tw->x() - t.label_w << " " << y() + tw->y() << " "
+                << t.label_w + tw->w() << " " << tw->h() << " " << (tw->visible() ? "shown" : "hidden") << "\n";
+        }
+        const std::pair<const char*, const Fl_Box*> fields[] = {
+            {"scene", scene_box_}, {"progress", progress_box_}, {"message", message_box_}};
+        for (const auto& [name, b] : fields) {
+            int tw = 0, th = 0;
+            b->measure_label(tw, th);
+            out << "field " << name << " " << x() + b->x() << " " << y() + b->y() << " " << b->w() << " " << b->h()
+                << " needs " << tw << "\n";
+        }
+        for (int i = 1; i <= messages_->size(); ++i) {
+            const std::string line = messages_->text(i);
+            const std::size_t text = line.find("@.");  // after the colour
+            out << "panel " << (text == std::string::npos ? line : line.substr(text + 2)) << "\n";
+        }
+    }
+    std::error_code ec;
+    fs::rename(tmp, options_.ready_file, ec);
+}
+
+void ViewerWindow::ready_cb(void* self) {
+    auto* win = static_cast<ViewerWindow*>(self);
+    Fl::flush();  // what the file describes is on screen
+    XSync(fl_display, False);
+    win->write_ready_file();
+}
+
+// After the first render has been reported, a new layout or new messages are reported too
+// (once they have settled: a resize by dragging comes as many).
+void ViewerWindow::rewrite_ready_file_soon() {
+    if (!ready_written_) return;
+    Fl::remove_timeout(ready_cb, this);
+    Fl::add_timeout(0.3, ready_cb, this);
 }
 
 }  // namespace whitted::viewer

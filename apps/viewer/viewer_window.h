@@ -34,7 +34,7 @@ struct ViewerOptions {
     int window_width = 1000, window_height = 760;
     // For tests and scripts: after the first render ends (finished, failed or stopped) and is drawn,
     std::string screenshot;                  // save the image area's displayed pixels (fl_read_image) here,
-    std::string ready_file;                  // write "state, window and image geometry" here,
+    std::string ready_file;                  // write state, geometry and messages here (and on changes),
     bool exit_when_done = false;             // and exit (0 finished, 2 scene error, 3 I/O error).
 };
 
@@ -60,14 +60,24 @@ private:
     void watch();
     void when_done();
     void layout();
+    void layout_toolbar();
+    void layout_status();
     void read_controls(RenderSettings& settings, bool& fit);
     void update_status(const RenderStatus& st);
-    void show_diagnostics(const RenderStatus& st);
+    void show_messages(const RenderStatus& st);
     void ask_for_textures(const RenderStatus& st);
     void choose_and_open();
     void save_image_as();
     LoadOptions load_options() const;
     void set_message(const std::string& text);
+    std::string scene_dir() const;
+    struct Rect {
+        int x, y, w, h;
+    };
+    Rect visible_image() const;
+    static void ready_cb(void* self);
+    void write_ready_file();
+    void rewrite_ready_file_soon();
 
     ViewerOptions options_;
     RenderController controller_;
@@ -77,6 +87,13 @@ private:
     Fl_Spinner *width_ = nullptr, *height_ = nullptr, *depth_ = nullptr, *aa_ = nullptr, *threads_ = nullptr;
     Fl_Check_Button* fit_ = nullptr;
     Fl_Choice* mode_ = nullptr;
+    // The tool bar's widgets, left to right, with the size each was made at: layout() keeps it.
+    struct Tool {
+        Fl_Widget* widget;
+        const char* id;  // names it in the ready file
+        int gap, label_w, w, h;  // space before it, then its label (drawn to its left), then the widget
+    };
+    std::vector<Tool> tools_;
     Fl_Scroll* scroll_ = nullptr;
     ImageView* view_ = nullptr;
     Fl_Browser* messages_ = nullptr;
@@ -87,7 +104,9 @@ private:
     std::string watched_stamp_;
     std::uint64_t image_version_ = 0;
     std::uint64_t shown_diagnostics_job_ = ~0ull, asked_textures_job_ = 0, first_job_ = 0;
+    std::vector<std::string> diagnostic_lines_, message_lines_;  // of the last load; in the panel now
     bool done_handled_ = false;
+    bool ready_written_ = false;
     bool quitting_ = false;
     std::string extra_message_;  // a message of the viewer's own (e.g. a failed save)
     int exit_code_ = 0;

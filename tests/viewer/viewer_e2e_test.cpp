@@ -10,6 +10,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -284,6 +286,204 @@ TEST_F(ViewerE2E, ASceneWithErrorsIsReportedNotACrash) {
                  {{"DISPLAY", x.display()}, {"ASAN_OPTIONS", asan_options_for_viewer()}});
     EXPECT_EQ(viewer.wait_exit(60s), 2) << viewer.output();
     EXPECT_NE(viewer.output().find(scene_ + ":2:"), std::string::npos) << viewer.output();
+}
+
+// What the viewer writes to its --ready-file (root-window coordinates).
+struct Box {
+    int x = 0, y = 0, w = 0, h = 0;
+    bool shown = true;
+    int right() const { return x + w; }
+};
+struct Ready {
+    std::string state;
+    Box window, image;
+    std::vector<std::pair<std::string, Box>> tools;  // left to right as made; x and w include the label
+    std::map<std::string, Box> fields;               // of the status bar
+    std::map<std::string, int> needs;                // the width each field's text takes
+    std::vector<std::string> panel;                  // the messages panel's lines
+};
+
+Ready read_ready(const std::string& path) {
+    Ready r;
+    std::ifstream in(path);
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream ls(line);
+        std::string key, name, word;
+        Box b;
+        ls >> key;
+        if (key == "state") ls >> r.state;
+        else if (key == "window") ls >> r.window.x >> r.window.y >> r.window.w >> r.window.h;
+        else if (key == "image") ls >> r.image.x >> r.image.y >> r.image.w >> r.image.h;
+        else if (key == "tool" && ls >> name >> b.x >> b.y >> b.w >> b.h >> word) {
+            b.shown = word == "shown";
+            r.tools.emplace_back(name, b);
+        } else if (key == "field" && ls >> name >> b.x >> b.y >> b.w >> b.h >> word >> r.needs[name]) {
+            r.fields[name] = b;
+        } else if (key == "panel") {
+            r.panel.push_back(line.substr(std::min(line.size(), key.size() + 1)));
+        }
+    }
+    return r;
+}
+
+// Waits until the viewer has written a ready file that `good` accepts; the file is read whole
+// (the viewer writes it under another name and renames it).
+bool wait_for_ready(Child& viewer, const std::string& path, Ready& out, const std::function<bool(const Ready&)>& good,
+                    std::chrono::seconds timeout = 120s) {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (viewer.wait_exit(0ms) != -1) return false;
+        if (fs::exists(path) && good(out = read_ready(path))) return true;
+        std::this_thread::sleep_for(50ms);
+    }
+    return false;
+}
+
+// A real grab of the whole X screen.
+Image grab_screen(const std::string& display, const std::string& png) {
+    auto grab = run_process({"/bin/sh", "-c",
+                             "'" + find_on_path("xwd") + "' -root -silent -display " + display + " | '" +
+                                 find_on_path("convert") + "' xwd:- '" + png + "'"});
+    Image screen;
+    EXPECT_EQ(grab.exit_code, 0) << grab.output;
+    if (grab.exit_code == 0) {
+        EXPECT_EQ(read_image(png, screen), "");
+    }
+    return screen;
+}
+
+// xdotool on our X server; returns the first line of its output (e.g. a window id).
+std::string xdotool(const std::string& display, const std::string& args) {
+    auto r = run_process({"/bin/sh", "-c", "DISPLAY=" + display + " '" + find_on_path("xdotool") + "' " + args});
+    EXPECT_EQ(r.exit_code, 0) << "xdotool " << args << ":\n" << r.output;
+    return r.output.substr(0, r.output.find('\n'));
+}
+
+bool overlap(const Box& a, const Box& b) {
+    return a.x < b.right() && b.x < a.right() && a.y < b.y + b.h && b.y < a.y + a.h;
+}
+
+TEST_F(ViewerE2E, TheToolBarKeepsItsLayoutWhenTheWindowIsResized) {
+    Xvfb x;
+    std::string why;
+    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
+    for (const char* tool : {"xdotool", "xwd", "convert"})
+        if (find_on_path(tool).empty())
+            GTEST_SKIP() << "viewer screen test skipped: needs xdotool, xwd (x11-apps) and convert (imagemagick)";
+
+    const std::string ready = dir_ + "/ready.txt";
+    Child viewer({WHITTED_VIEWER_PATH, scene_, "--width", "160", "--height", "120", "--threads", "2", "--ready-file",
+                  ready},
+                 dir_ + "/viewer.log", {{"DISPLAY", x.display()}, {"ASAN_OPTIONS", asan_options_for_viewer()}});
+    Ready made;
+    ASSERT_TRUE(wait_for_ready(viewer, ready, made, [](const Ready&) { return true; })) << viewer.output();
+    ASSERT_EQ(made.window.w, 1000);  // the default size, wide enough for every tool
+    ASSERT_EQ(made.tools.size(), 9u);
+    for (const auto& [name, b] : made.tools) {
+        EXPECT_TRUE(b.shown) << name;
+        EXPECT_EQ(b.h, 24) << name;
+    }
+    const Image made_screen = grab_screen(x.display(), dir_ + "/made.png");
+    const std::string window = xdotool(x.display(), "search --name whitted-view");
+    ASSERT_FALSE(window.empty());
+
+    for (auto [W, H] : {std::pair{600, 400}, std::pair{1270, 950}}) {
+        SCOPED_TRACE(std::to_string(W) + "x" + std::to_string(H));
+        fs::remove(ready);
+        xdotool(x.display(), "windowsize " + window + " " + std::to_string(W) + " " + std::to_string(H));
+        Ready r;
+        ASSERT_TRUE(wait_for_ready(viewer, ready, r, [&](const Ready& n) { return n.window.w == W && n.window.h == H; },
+                                   20s))
+            << "no ready file for the new size:\n" << viewer.output();
+
+        // Every tool keeps the size and place it was made with, relative to the window; those
+        // that would stick out are hidden, and no two that are shown overlap.
+        ASSERT_EQ(r.tools.size(), made.tools.size());
+        int shown_right = 0;
+        for (std::size_t i = 0; i < r.tools.size(); ++i) {
+            const auto& [name, b] = r.tools[i];
+            const Box& m = made.tools[i].second;
+            EXPECT_EQ(b.x - r.window.x, m.x - made.window.x) << name;
+            EXPECT_EQ(b.y - r.window.y, m.y - made.window.y) << name;
+            EXPECT_EQ(b.w, m.w) << name;
+            EXPECT_EQ(b.h, m.h) << name;
+            if (!b.shown) {
+                EXPECT_GT(b.right(), r.window.right() - 10) << name << " is hidden though it fits";
+                continue;
+            }
+            EXPECT_LE(b.right(), r.window.right()) << name;
+            EXPECT_TRUE(r.tools[i > 0 ? i - 1 : 0].second.shown) << name << " is shown after a hidden one";
+            for (std::size_t j = 0; j < i; ++j)
+                EXPECT_FALSE(overlap(b, r.tools[j].second)) << name << " overlaps " << r.tools[j].first;
+            shown_right = std::max(shown_right, b.right() - r.window.x);
+        }
+        EXPECT_TRUE(r.tools[0].second.shown && r.tools[1].second.shown) << "Render and Stop always fit";
+
+        // The tool bar looks as it did at the start, as far as it is shown.
+        const Image screen = grab_screen(x.display(), dir_ + "/resized.png");
+        const int top = made.tools[0].second.y - made.window.y - 2, rows = made.tools[0].second.h + 4;
+        int differ = 0;
+        for (int yy = top; yy < top + rows; ++yy)
+            for (int xx = 0; xx < shown_right; ++xx)
+                differ += made_screen.at(made.window.x + xx, made.window.y + yy) !=
+                          screen.at(r.window.x + xx, r.window.y + yy);
+        EXPECT_EQ(differ, 0) << "the tool bar changed (see " << dir_ << "/made.png and resized.png)";
+
+        // The status bar's fields fill its row left to right; the progress text fits its field.
+        const Box &scene = r.fields["scene"], &progress = r.fields["progress"], &message = r.fields["message"];
+        EXPECT_EQ(scene.x, r.window.x);
+        EXPECT_EQ(progress.x, scene.right());
+        EXPECT_EQ(message.x, progress.right());
+        EXPECT_EQ(message.right(), r.window.right());
+        EXPECT_EQ(scene.y + scene.h, r.window.y + r.window.h);
+        EXPECT_GE(progress.w, r.needs["progress"]);
+    }
+    kill(viewer.pid, SIGTERM);
+    EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
+}
+
+// File > Save image as proposes the scene's folder and name; a name it cannot write is an error
+// in the status bar and in the messages panel.
+TEST_F(ViewerE2E, SaveImageAsStartsInTheScenesFolder) {
+    Xvfb x;
+    std::string why;
+    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
+    if (find_on_path("xdotool").empty()) GTEST_SKIP() << "viewer screen test skipped: needs xdotool";
+    fs::create_directory(dir_ + "/scenes");
+    const std::string scene = dir_ + "/scenes/room.sc", ready = dir_ + "/ready.txt";
+    fs::copy_file(scene_, scene);
+    // (HOME: the file chooser keeps a list of recent files there.)
+    Child viewer({WHITTED_VIEWER_PATH, scene, "--width", "160", "--height", "120", "--threads", "2", "--ready-file",
+                  ready},
+                 dir_ + "/viewer.log",
+                 {{"DISPLAY", x.display()}, {"HOME", dir_}, {"ASAN_OPTIONS", asan_options_for_viewer()}});
+    Ready r;
+    ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready&) { return true; })) << viewer.output();
+    ASSERT_EQ(r.state, "finished");
+    const std::string window = xdotool(x.display(), "search --name whitted-view");
+
+    // Opens the dialog with Ctrl+S and types into it.
+    auto save_as = [&](const std::vector<std::string>& keys) {
+        xdotool(x.display(), "windowfocus --sync " + window + " key ctrl+s");
+        const std::string dialog = xdotool(x.display(), "search --sync --name 'Save image as'");
+        xdotool(x.display(), "windowfocus --sync " + dialog);
+        for (const std::string& k : keys) xdotool(x.display(), k);
+    };
+    save_as({"key Return"});
+    const auto deadline = std::chrono::steady_clock::now() + 20s;
+    while (!fs::exists(dir_ + "/scenes/room.png") && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(50ms);
+    Image saved;
+    ASSERT_EQ(read_image(dir_ + "/scenes/room.png", saved), "") << viewer.output();
+    EXPECT_EQ(saved.width, 160);
+
+    save_as({"key ctrl+a", "type x.gif", "key Return"});
+    const std::string error = "error: cannot write '" + dir_ + "/scenes/x.gif': use .png, .bmp, .ppm, .jpg or .jpeg";
+    ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready& n) { return !n.panel.empty(); }, 20s))
+        << viewer.output();
+    EXPECT_EQ(r.panel, std::vector<std::string>{error});
+    kill(viewer.pid, SIGTERM);
+    EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
 }
 
 }  // namespace
