@@ -17,3 +17,5 @@ find . -name '*.sc' | sort | while read -r scene; do
     "$cli" "$scene" -o "$out/$name.png" --width 160 --height 120 -q
     echo "$out/$name.png"
 done
+"$cli" showcase.sc -o "$out/showcase__aa3.png" --width 160 --height 120 --aa 3 -q
+echo "$out/showcase__aa3.png"

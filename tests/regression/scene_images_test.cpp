@@ -70,12 +70,10 @@ Difference compare(const Image& a, const Image& b) {
     return d;
 }
 
-TEST(SceneImages, EveryBundledSceneMatchesItsReference) {
-    const auto scenes = bundled_scenes();
-    ASSERT_GE(scenes.size(), 12u) << "the showcase, the texture scene and the feature scenes";
+// Renders `scene` at the test size and compares it with reference `name`.png.
+void expect_matches_reference(const fs::path& scene, const std::string& name, int aa) {
     const fs::path failed_dir = fs::temp_directory_path() / "whitted-regression";
-    for (const fs::path& scene : scenes) {
-        const std::string name = reference_name(scene);
+    {
         SCOPED_TRACE(name);
         Image reference;
         const std::string ref_path = (kReferences / (name + ".png")).string();
@@ -89,6 +87,7 @@ TEST(SceneImages, EveryBundledSceneMatchesItsReference) {
         RenderOptions options;
         options.width = kWidth;
         options.height = kHeight;
+        options.aa = aa;
         Image image(kWidth, kHeight);
         render(*loaded.scene, options, image);
 
@@ -103,6 +102,16 @@ TEST(SceneImages, EveryBundledSceneMatchesItsReference) {
                         << " (max " << 100 * kMaxOutlierFraction << "%), worst " << d.worst
                         << "; this render is in " << failed_dir.string();
     }
+}
+
+TEST(SceneImages, EveryBundledSceneMatchesItsReference) {
+    const auto scenes = bundled_scenes();
+    ASSERT_GE(scenes.size(), 12u) << "the showcase, the texture scene and the feature scenes";
+    for (const fs::path& scene : scenes) expect_matches_reference(scene, reference_name(scene), 1);
+}
+
+TEST(SceneImages, TheAntiAliasedShowcaseMatchesItsReference) {
+    expect_matches_reference(kScenes / "showcase.sc", "showcase__aa3", 3);
 }
 
 // The comparison itself must catch real changes: lighting switched off, and (subtler) the
