@@ -52,6 +52,7 @@ int run(int argc, char** argv) {
                "130 interrupted (the part rendered so far is written).");
     std::string scene_path, output, mode_name = "whitted", missing = "error";
     int width = 640, height = 480, max_depth = 5, aa = 1, threads = 0;
+    float aa_threshold = 0.0f;
     bool lenient = false, quiet = false, stats = false;
     std::vector<std::string> texture_dirs;
     app.add_option("scene", scene_path, "Scene file (.sc); without one, renders the bundled showcase");
@@ -62,6 +63,10 @@ int run(int argc, char** argv) {
         ->check(CLI::Range(0, 1000));
     app.add_option("--aa", aa, "Anti-aliasing: N x N rays per pixel, averaged (1 = one ray through the centre)")
         ->check(CLI::Range(1, kMaxAa));
+    app.add_option("--aa-threshold", aa_threshold,
+                   "Adaptive anti-aliasing: supersample only pixels whose colour differs from a neighbour's by more "
+                   "than this (0-1, per channel); 0 = every pixel")
+        ->check(CLI::Range(0.0f, 1.0f));
     app.add_option("--mode", mode_name, "Render mode")->check(CLI::IsMember({"whitted", "raycast", "normals", "depth"}));
     app.add_option("--threads", threads, "Worker threads (0 = all hardware threads)")->check(CLI::Range(0, 1024));
     app.add_option("--texture-path", texture_dirs, "Extra directory to look for textures in (repeatable)")
@@ -119,6 +124,7 @@ int run(int argc, char** argv) {
     options.height = height;
     options.max_depth = max_depth;
     options.aa = aa;
+    options.aa_threshold = aa_threshold;
     options.mode = *parse_render_mode(mode_name);
     options.threads = threads;
     options.cancel = &cli::interrupt_flag();

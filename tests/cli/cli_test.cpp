@@ -61,6 +61,7 @@ TEST(Cli, BadUsageExitsOne) {
     EXPECT_EQ(run_process({test::cli_path(), "--mode", "fancy"}).exit_code, 1);
     EXPECT_EQ(run_process({test::cli_path(), "--aa", "0"}).exit_code, 1);
     EXPECT_EQ(run_process({test::cli_path(), "--aa", "17"}).exit_code, 1);
+    EXPECT_EQ(run_process({test::cli_path(), "--aa-threshold", "1.5"}).exit_code, 1);
     EXPECT_EQ(run_process({test::cli_path(), "x.sc", "-o", "out.gif"}).exit_code, 1);
     auto help = run_process({test::cli_path(), "--help"});
     EXPECT_EQ(help.exit_code, 0);

@@ -260,6 +260,66 @@ TEST(Renderer, AntiAliasedImageIsByteIdenticalForAnyThreadCountAndTileSize) {
     EXPECT_NE(one.rgb, plain.rgb) << "anti-aliasing should change the edges of the shapes";
 }
 
+TEST(Renderer, AdaptiveAntiAliasingSupersamplesOnlyWhereNeighboursDiffer) {
+    // The edge three quarters across column 4 of a 9 × 5 image: column 4's centre (4.5) sees the
+    // red wall, column 5's (5.5) the blue background, so exactly columns 4 and 5 differ from a
+    // neighbour. They get 4 × 4 rays (column 4: 3/4 red; column 5: all blue); every other pixel
+    // keeps its centre ray.
+    RenderOptions o;
+    o.width = 9;
+    o.height = 5;
+    o.aa = 4;
+    o.aa_threshold = 0.1f;
+    Image img(o.width, o.height);
+    RenderStats s = render(edge_scene(9, 5, 4.75f, {1, 0, 0}, {0, 0, 1}), o, img);
+    for (int y = 0; y < 5; ++y) {
+        EXPECT_EQ(img.at(3, y), glm::u8vec3(255, 0, 0)) << y;
+        EXPECT_EQ(img.at(4, y), glm::u8vec3(191, 0, 64)) << y;
+        EXPECT_EQ(img.at(5, y), glm::u8vec3(0, 0, 255)) << y;
+    }
+    // One tile: 45 centre rays, then 16 for each of the 10 pixels of columns 4 and 5.
+    EXPECT_EQ(s.rays.camera, 45u + 10u * 16u);
+}
+
+TEST(Renderer, AdaptiveAntiAliasingIsEitherTheCentreRayOrTheFullGridPerPixel) {
+    Scene scene = busy_scene();
+    RenderOptions o;
+    o.width = 97;
+    o.height = 61;
+    o.tile_size = 16;
+    o.threads = 2;
+    Image plain(o.width, o.height), full(o.width, o.height), adaptive(o.width, o.height);
+    render(scene, o, plain);
+    o.aa = 3;
+    render(scene, o, full);
+    o.aa_threshold = 0.05f;
+    render(scene, o, adaptive);
+    int centre_only = 0, supersampled = 0;
+    for (int y = 0; y < o.height; ++y)
+        for (int x = 0; x < o.width; ++x) {
+            const glm::u8vec3 a = adaptive.at(x, y);
+            ASSERT_TRUE(a == plain.at(x, y) || a == full.at(x, y)) << x << "," << y;
+            centre_only += a == plain.at(x, y) && a != full.at(x, y);
+            supersampled += a == full.at(x, y) && a != plain.at(x, y);
+        }
+    EXPECT_GT(centre_only, 0) << "smooth areas keep their one ray";
+    EXPECT_GT(supersampled, 100) << "edges are anti-aliased";
+    // Tiles compare their edge pixels with the next tile's: no seams, whatever the tiling.
+    Image one_thread(o.width, o.height), other_tiles(o.width, o.height);
+    o.threads = 1;
+    render(scene, o, one_thread);
+    o.tile_size = 7;
+    o.threads = 2;
+    render(scene, o, other_tiles);
+    EXPECT_EQ(one_thread.rgb, adaptive.rgb);
+    EXPECT_EQ(other_tiles.rgb, adaptive.rgb);
+    // A threshold no difference of clamped colours exceeds: the one-ray image, byte for byte.
+    o.aa_threshold = 1.0f;
+    Image none(o.width, o.height);
+    render(scene, o, none);
+    EXPECT_EQ(none.rgb, plain.rgb);
+}
+
 TEST(Renderer, ToByteRoundsAndClamps) {
     EXPECT_EQ(to_byte(0.0f), 0);
     EXPECT_EQ(to_byte(1.0f), 255);
