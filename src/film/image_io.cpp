@@ -22,21 +22,31 @@ std::string extension_of(const std::string& path) {
     return ext;
 }
 
+// The temporary file being written, for a signal handler (image_file_being_written). One writer
+// at a time holds it; a second concurrent writer (the viewer saving while a test writes, say)
+// is simply not registered.
 char g_writing_path[4096];
-std::atomic<bool> g_writing{false};
-static_assert(std::atomic<bool>::is_always_lock_free, "read from signal handlers");
+enum WritingState : int { kFree, kFilling, kNamed };
+std::atomic<int> g_writing{kFree};
+static_assert(std::atomic<int>::is_always_lock_free, "read from signal handlers");
 
-// Names the temporary file in g_writing_path for as long as it may exist.
 class WritingGuard {
 public:
     explicit WritingGuard(const std::string& tmp) {
-        if (tmp.size() >= sizeof g_writing_path) return;
+        int expected = kFree;
+        if (tmp.size() >= sizeof g_writing_path || !g_writing.compare_exchange_strong(expected, kFilling)) return;
+        owner_ = true;
         std::memcpy(g_writing_path, tmp.c_str(), tmp.size() + 1);
-        g_writing.store(true, std::memory_order_release);
+        g_writing.store(kNamed, std::memory_order_release);
     }
-    ~WritingGuard() { g_writing.store(false, std::memory_order_release); }
+    ~WritingGuard() {
+        if (owner_) g_writing.store(kFree, std::memory_order_release);
+    }
     WritingGuard(const WritingGuard&) = delete;
     WritingGuard& operator=(const WritingGuard&) = delete;
+
+private:
+    bool owner_ = false;
 };
 
 // Where the encoders' bytes go: the temporary file, every write checked (stb's own file writers
@@ -116,7 +126,7 @@ std::string write_image(const Image& image, const std::string& path) {
 }
 
 const char* image_file_being_written() {
-    return g_writing.load(std::memory_order_acquire) ? g_writing_path : nullptr;
+    return g_writing.load(std::memory_order_acquire) == kNamed ? g_writing_path : nullptr;
 }
 
 std::string read_image(const std::string& path, Image& out) {
