@@ -86,8 +86,9 @@ int main(int argc, char** argv) {
     auto* shot = app.add_option("--screenshot", o.screenshot,
                                 "When the first render ends, save the image as shown on screen to FILE and exit");
     app.add_option("--ready-file", o.ready_file,
-                   "When the first render ends and is on screen, write its state and the window and image "
-                   "geometry (root coordinates) to FILE");
+                   "When the first render ends and is on screen, write its job number, state and the window "
+                   "and image geometry (root coordinates) to FILE; rewritten when a later render ends or the "
+                   "layout changes");
     app.add_flag("--exit-when-done", o.exit_when_done, "Exit when the first render ends (for scripts)");
     try {
         app.parse(argc, argv);

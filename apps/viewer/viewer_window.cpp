@@ -37,6 +37,17 @@ constexpr const char* kModes[] = {"whitted", "raycast", "normals", "depth"};
 
 std::string base_name(const std::string& path) { return fs::path(path).filename().string(); }
 
+// FLTK draws "@name" in a label or tooltip as a symbol; "@@" is a literal '@'. For names (scenes,
+// textures, paths) that must show as written.
+std::string escape_label(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '@') out += '@';
+        out += c;
+    }
+    return out;
+}
+
 // Errors and warnings are coloured in the status bar and also listed in the messages panel.
 Fl_Color message_color(const std::string& msg) {
     if (msg.find("error:") != std::string::npos) return FL_RED;
@@ -58,9 +69,9 @@ std::vector<std::string> split_lines(const std::string& text) {
 // browser, which scrolls when there are many). 1 = choose a file, 0 = use the checkerboard.
 int ask_texture_dialog(const MissingTexture& mt, const std::string& where, const Fl_Window& parent) {
     const int W = 640, line_h = 17, rows = std::clamp(int(mt.tried.size()), 2, 14);
-    const std::string about = "The texture \"" + mt.name + "\" (" + where + ") could not be loaded: " + mt.reason +
-                              ".\n\nLooked at " + std::to_string(mt.tried.size()) +
-                              (mt.tried.size() == 1 ? " place:" : " places:");
+    const std::string about = escape_label("The texture \"" + mt.name + "\" (" + where + ") could not be loaded: " +
+                                           mt.reason + ".\n\nLooked at " + std::to_string(mt.tried.size()) +
+                                           (mt.tried.size() == 1 ? " place:" : " places:"));
     int text_w = W - 20, text_h = 0;
     fl_font(FL_HELVETICA, FL_NORMAL_SIZE);
     fl_measure(about.c_str(), text_w, text_h);  // wrapped at the dialog's width
@@ -237,6 +248,7 @@ ViewerWindow::~ViewerWindow() {
     Fl::remove_timeout(watch_cb, this);
     Fl::remove_timeout(done_cb, this);
     Fl::remove_timeout(ready_cb, this);
+    Fl::remove_timeout(fit_cb, this);
     controller_.stop();
 }
 
@@ -253,6 +265,14 @@ void ViewerWindow::layout() {
     const int msg_h = show_messages_ ? kMessagesH : 0;
     const int top = kMenuH + kToolH, bottom = H - kStatusH - msg_h;
     scroll_->resize(0, top, W, std::max(10, bottom - top));
+    // With Fit window on, the image follows its area: render again once resizing has settled
+    // (a drag comes as many resizes; each one postpones it).
+    if (scroll_->w() != area_w_ || scroll_->h() != area_h_) {
+        area_w_ = scroll_->w();
+        area_h_ = scroll_->h();
+        Fl::remove_timeout(fit_cb, this);
+        if (fit_->value() && !scene_.empty()) Fl::add_timeout(0.3, fit_cb, this);
+    }
     if (show_messages_) {
         messages_->resize(0, bottom, W, msg_h);
         messages_->show();
@@ -358,6 +378,7 @@ void ViewerWindow::quit() {
     controller_.stop();
     Fl::remove_timeout(poll_cb, this);
     Fl::remove_timeout(watch_cb, this);
+    Fl::remove_timeout(fit_cb, this);
     // Every window, dialogs included: a dialog's own event loop ends when its window is hidden.
     while (Fl_Window* w = Fl::first_window()) w->hide();
     // Fl::wait() runs timers before it sleeps: with none left it would sleep until the next X
@@ -380,6 +401,7 @@ std::string ViewerWindow::scene_dir() const {
 void ViewerWindow::poll_cb(void* self) { static_cast<ViewerWindow*>(self)->poll(); }
 void ViewerWindow::watch_cb(void* self) { static_cast<ViewerWindow*>(self)->watch(); }
 void ViewerWindow::done_cb(void* self) { static_cast<ViewerWindow*>(self)->when_done(); }
+void ViewerWindow::fit_cb(void* self) { static_cast<ViewerWindow*>(self)->fit_to_area(); }
 
 void ViewerWindow::poll() {
     if (g_quit_requested) {
@@ -412,6 +434,11 @@ void ViewerWindow::poll() {
 
     update_status(st);
     show_messages(st);
+    // Every render that ends is reported, not only the first (e.g. after --watch reloads).
+    if (!is_busy(st.state) && st.job != ended_job_) {
+        ended_job_ = st.job;
+        rewrite_ready_file_soon();
+    }
 
     // The first render has ended: the hooks for tests and scripts, once it is on screen.
     // (Automated runs never open dialogs: a missing texture ends them like a scene error.)
@@ -464,8 +491,8 @@ void ViewerWindow::update_status(const RenderStatus& st) {
 
     const std::string& msg = extra_message_.empty() ? st.message : extra_message_;
     // Sets a field's text (first line; " " keeps it off the border), colour and tooltip (all of it).
-    auto set = [](Fl_Box* b, const std::string& text, const std::string& tip, Fl_Color c) {
-        const std::string label = " " + split_lines(text).front();
+    auto set = [](Fl_Box* b, const std::string& text, const std::string& tip_text, Fl_Color c) {
+        const std::string label = escape_label(" " + split_lines(text).front()), tip = escape_label(tip_text);
         if (label == (b->label() ? b->label() : "") && tip == (b->tooltip() ? b->tooltip() : "") &&
             c == b->labelcolor())
             return false;
@@ -549,6 +576,21 @@ void ViewerWindow::watch() {
         }
     }
     Fl::repeat_timeout(1.0, watch_cb, this);
+}
+
+// The image area has a new size and Fit window is on: render at that size (the controller reuses
+// the loaded scene). A load in progress is waited for, not restarted. Not after a stop (the user
+// wanted it stopped), a failure or missing textures (it would fail, or ask, again), nor in
+// automated runs (they end with the first render).
+void ViewerWindow::fit_to_area() {
+    if (!fit_->value() || scene_.empty() || options_.exit_when_done) return;
+    const RenderStatus st = controller_.status();
+    if (st.state == RenderState::Loading) {
+        Fl::repeat_timeout(0.3, fit_cb, this);
+        return;
+    }
+    const bool shown = st.state == RenderState::Rendering || st.state == RenderState::Finished;
+    if (shown && (st.settings.width != scroll_->w() || st.settings.height != scroll_->h())) render();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -635,15 +677,19 @@ ViewerWindow::Rect ViewerWindow::visible_image() const {
 }
 
 // For tests and scripts. Geometry in root-window coordinates (where a screen grab finds things);
-// a tool's x and w include its label; a field "needs" the width its text takes.
+// the area is where the image is shown (Fit window renders at its size); a tool's x and w include
+// its label; a field "needs" the width its text takes, and its label is as given to FLTK ("@@" for '@').
 void ViewerWindow::write_ready_file() {
     const RenderStatus st = controller_.status();
     const Rect vis = visible_image();
     const std::string tmp = options_.ready_file + ".tmp";
     {
         std::ofstream out(tmp);
-        out << "state " << state_name(st.state) << "\n"
+        out << "job " << st.job << " " << (st.scene_reused ? "reused" : "loaded") << "\n"
+            << "state " << state_name(st.state) << "\n"
             << "window " << x() << " " << y() << " " << w() << " " << h() << "\n"
+            << "area " << x() + scroll_->x() << " " << y() + scroll_->y() << " " << scroll_->w() << " "
+            << scroll_->h() << "\n"
             << "image " << x() + vis.x << " " << y() + vis.y << " " << vis.w << " " << vis.h << "\n";
         for (const Tool& t : tools_) {
             const Fl_Widget* tw = t.widget;
@@ -656,7 +702,7 @@ void ViewerWindow::write_ready_file() {
             int tw = 0, th = 0;
             b->measure_label(tw, th);
             out << "field " << name << " " << x() + b->x() << " " << y() + b->y() << " " << b->w() << " " << b->h()
-                << " needs " << tw << "\n";
+                << " needs " << tw << " label " << (b->label() ? b->label() : "") << "\n";
         }
         for (int i = 1; i <= messages_->size(); ++i) {
             const std::string line = messages_->text(i);
@@ -675,8 +721,8 @@ void ViewerWindow::ready_cb(void* self) {
     win->write_ready_file();
 }
 
-// After the first render has been reported, a new layout or new messages are reported too
-// (once they have settled: a resize by dragging comes as many).
+// After the first render has been reported, a render that ends, a new layout or new messages are
+// reported too (once they have settled: a resize by dragging comes as many).
 void ViewerWindow::rewrite_ready_file_soon() {
     if (!ready_written_) return;
     Fl::remove_timeout(ready_cb, this);

@@ -34,7 +34,8 @@ struct ViewerOptions {
     int window_width = 1000, window_height = 760;
     // For tests and scripts: after the first render ends (finished, failed or stopped) and is drawn,
     std::string screenshot;                  // save the image area's displayed pixels (fl_read_image) here,
-    std::string ready_file;                  // write state, geometry and messages here (and on changes),
+    std::string ready_file;                  // write job, state, geometry and messages here (again when a
+                                             // later render ends or the layout or messages change),
     bool exit_when_done = false;             // and exit (0 finished, 2 scene error, 3 I/O error).
 };
 
@@ -56,8 +57,10 @@ private:
     static void poll_cb(void* self);
     static void watch_cb(void* self);
     static void done_cb(void* self);
+    static void fit_cb(void* self);
     void poll();
     void watch();
+    void fit_to_area();
     void when_done();
     void layout();
     void layout_toolbar();
@@ -103,7 +106,8 @@ private:
     std::string scene_;
     std::string watched_stamp_;
     std::uint64_t image_version_ = 0;
-    std::uint64_t shown_diagnostics_job_ = ~0ull, asked_textures_job_ = 0, first_job_ = 0;
+    std::uint64_t shown_diagnostics_job_ = ~0ull, asked_textures_job_ = 0, first_job_ = 0, ended_job_ = 0;
+    int area_w_ = 0, area_h_ = 0;  // the image area's size at the last layout
     std::vector<std::string> diagnostic_lines_, message_lines_;  // of the last load; in the panel now
     bool done_handled_ = false;
     bool ready_written_ = false;

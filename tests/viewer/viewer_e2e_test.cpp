@@ -182,6 +182,53 @@ TEST(ViewerNoDisplay, HelpAndBadUsageNeedNoDisplay) {
     EXPECT_EQ(run_process({"/usr/bin/env", "-u", "DISPLAY", "ASAN_OPTIONS=" + asan_options_for_viewer(), WHITTED_VIEWER_PATH, "--mode", "fancy"}).exit_code, 1);
 }
 
+// What the viewer writes to its --ready-file (root-window coordinates).
+struct Box {
+    int x = 0, y = 0, w = 0, h = 0;
+    bool shown = true;
+    int right() const { return x + w; }
+};
+struct Ready {
+    std::uint64_t job = 0;  // the render reported
+    bool reused = false;    // it reused the scene loaded before (the file had not changed)
+    std::string state;
+    Box window, area, image;  // the area is where the image is shown
+    std::vector<std::pair<std::string, Box>> tools;  // left to right as made; x and w include the label
+    std::map<std::string, Box> fields;               // of the status bar
+    std::map<std::string, int> needs;                // the width each field's text takes
+    std::map<std::string, std::string> labels;       // each field's label, as given to FLTK
+    std::vector<std::string> panel;                  // the messages panel's lines
+};
+
+Ready read_ready(const std::string& path) {
+    Ready r;
+    std::ifstream in(path);
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream ls(line);
+        std::string key, name, word;
+        Box b;
+        ls >> key;
+        if (key == "job") {
+            ls >> r.job >> word;
+            r.reused = word == "reused";
+        } else if (key == "state") ls >> r.state;
+        else if (key == "window") ls >> r.window.x >> r.window.y >> r.window.w >> r.window.h;
+        else if (key == "area") ls >> r.area.x >> r.area.y >> r.area.w >> r.area.h;
+        else if (key == "image") ls >> r.image.x >> r.image.y >> r.image.w >> r.image.h;
+        else if (key == "tool" && ls >> name >> b.x >> b.y >> b.w >> b.h >> word) {
+            b.shown = word == "shown";
+            r.tools.emplace_back(name, b);
+        } else if (key == "field" && ls >> name >> b.x >> b.y >> b.w >> b.h >> word >> r.needs[name]) {
+            r.fields[name] = b;
+            std::string label;  // after "label" and one space
+            if (ls >> word && std::getline(ls, label) && !label.empty()) r.labels[name] = label.substr(1);
+        } else if (key == "panel") {
+            r.panel.push_back(line.substr(std::min(line.size(), key.size() + 1)));
+        }
+    }
+    return r;
+}
+
 // Where `part` appears in `whole` (every pixel within 1 level), or {-1, -1}.
 std::pair<int, int> find_subimage(const Image& whole, const Image& part, std::pair<int, int> hint) {
     auto matches_at = [&](int ox, int oy) {
@@ -228,13 +275,11 @@ TEST_F(ViewerE2E, TheWindowShowsTheSameImageAsTheCommandLineRenderer) {
         std::this_thread::sleep_for(50ms);
     }
     ASSERT_TRUE(fs::exists(ready)) << "the render did not finish in time:\n" << viewer.output();
-    std::ifstream in(ready);
-    std::string word, state;
-    int wx, wy, ww, wh, ix, iy, iw, ih;
-    in >> word >> state >> word >> wx >> wy >> ww >> wh >> word >> ix >> iy >> iw >> ih;
-    EXPECT_EQ(state, "finished");
-    EXPECT_EQ(iw, W);
-    EXPECT_EQ(ih, H);
+    const Ready r = read_ready(ready);
+    EXPECT_EQ(r.state, "finished");
+    const int wx = r.window.x, ww = r.window.w, ix = r.image.x, iy = r.image.y;
+    EXPECT_EQ(r.image.w, W);
+    EXPECT_EQ(r.image.h, H);
 
     // A real screen grab of the whole X screen.
     auto grab = run_process({"/bin/sh", "-c",
@@ -286,44 +331,6 @@ TEST_F(ViewerE2E, ASceneWithErrorsIsReportedNotACrash) {
                  {{"DISPLAY", x.display()}, {"ASAN_OPTIONS", asan_options_for_viewer()}});
     EXPECT_EQ(viewer.wait_exit(60s), 2) << viewer.output();
     EXPECT_NE(viewer.output().find(scene_ + ":2:"), std::string::npos) << viewer.output();
-}
-
-// What the viewer writes to its --ready-file (root-window coordinates).
-struct Box {
-    int x = 0, y = 0, w = 0, h = 0;
-    bool shown = true;
-    int right() const { return x + w; }
-};
-struct Ready {
-    std::string state;
-    Box window, image;
-    std::vector<std::pair<std::string, Box>> tools;  // left to right as made; x and w include the label
-    std::map<std::string, Box> fields;               // of the status bar
-    std::map<std::string, int> needs;                // the width each field's text takes
-    std::vector<std::string> panel;                  // the messages panel's lines
-};
-
-Ready read_ready(const std::string& path) {
-    Ready r;
-    std::ifstream in(path);
-    for (std::string line; std::getline(in, line);) {
-        std::istringstream ls(line);
-        std::string key, name, word;
-        Box b;
-        ls >> key;
-        if (key == "state") ls >> r.state;
-        else if (key == "window") ls >> r.window.x >> r.window.y >> r.window.w >> r.window.h;
-        else if (key == "image") ls >> r.image.x >> r.image.y >> r.image.w >> r.image.h;
-        else if (key == "tool" && ls >> name >> b.x >> b.y >> b.w >> b.h >> word) {
-            b.shown = word == "shown";
-            r.tools.emplace_back(name, b);
-        } else if (key == "field" && ls >> name >> b.x >> b.y >> b.w >> b.h >> word >> r.needs[name]) {
-            r.fields[name] = b;
-        } else if (key == "panel") {
-            r.panel.push_back(line.substr(std::min(line.size(), key.size() + 1)));
-        }
-    }
-    return r;
 }
 
 // Waits until the viewer has written a ready file that `good` accepts; the file is read whole
@@ -395,6 +402,7 @@ TEST_F(ViewerE2E, TheToolBarKeepsItsLayoutWhenTheWindowIsResized) {
         ASSERT_TRUE(wait_for_ready(viewer, ready, r, [&](const Ready& n) { return n.window.w == W && n.window.h == H; },
                                    20s))
             << "no ready file for the new size:\n" << viewer.output();
+        EXPECT_EQ(r.job, made.job) << "without Fit window a resize renders nothing";
 
         // Every tool keeps the size and place it was made with, relative to the window; those
         // that would stick out are hidden, and no two that are shown overlap.
@@ -484,6 +492,187 @@ TEST_F(ViewerE2E, SaveImageAsStartsInTheScenesFolder) {
     EXPECT_EQ(r.panel, std::vector<std::string>{error});
     kill(viewer.pid, SIGTERM);
     EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
+}
+
+
+// A one-sphere scene in the given diffuse colour: quick to render, easy to tell apart.
+std::string sphere_scene(const std::string& diffuse, const std::string& texture = "") {
+    return "camera [ eye 0 0 5 focus 0 0 0 angle 40 ]\n"
+           "light [ position 3 4 5 color 1 1 1 ]\n"
+           "background [ color 0.1 0.1 0.1 ]\n"
+           "mastersubgraph root [ trans [ object sphere [ diffuse " + diffuse +
+           (texture.empty() ? "" : " texture " + texture + " 1 1") + " ] ] ]\n";
+}
+
+// The command-line renderer's image of `scene` at W×H.
+Image cli_image(const std::string& scene, int W, int H, const std::string& png) {
+    auto cli = run_process({test::cli_path(), scene, "-o", png, "--width", std::to_string(W), "--height",
+                            std::to_string(H), "-q"});
+    EXPECT_EQ(cli.exit_code, 0) << cli.output;
+    Image img;
+    EXPECT_EQ(read_image(png, img), "");
+    return img;
+}
+
+// Whether the screen shows `expected` whole, exactly where the ready file says the image is.
+bool shows(const Image& screen, const Image& expected, const Box& image) {
+    return image.w == expected.width && image.h == expected.height &&
+           find_subimage(screen, expected, {image.x, image.y}) == std::make_pair(image.x, image.y);
+}
+
+// Rewrites a file in place with text of the same length (as an editor saving a colour change)
+// and moves its modification time on, whatever the file system's timestamp resolution.
+void rewrite_scene(const std::string& path, const std::string& text) {
+    const auto before = fs::last_write_time(path);
+    std::ofstream(path) << text;
+    fs::last_write_time(path, before + 2s);
+}
+
+class ViewerOnScreen : public ViewerE2E {
+protected:
+    void SetUp() override {
+        ViewerE2E::SetUp();
+        ready_ = dir_ + "/ready.txt";
+        if (!x_.start(dir_, why_)) GTEST_SKIP() << "viewer screen test skipped: " << why_;
+        for (const char* tool : {"xwd", "convert"})
+            if (find_on_path(tool).empty())
+                GTEST_SKIP() << "viewer screen test skipped: needs xwd (x11-apps) and convert (imagemagick)";
+        std::ofstream(scene_) << sphere_scene("0.9 0.1 0.1");
+        red_ = cli_image(scene_, kW, kH, dir_ + "/red.png");
+        std::ofstream(dir_ + "/blue.sc") << sphere_scene("0.1 0.1 0.9");
+        blue_ = cli_image(dir_ + "/blue.sc", kW, kH, dir_ + "/blue.png");
+    }
+    std::unique_ptr<Child> start_viewer(const std::vector<std::string>& extra) {
+        std::vector<std::string> argv{WHITTED_VIEWER_PATH, scene_, "--width", std::to_string(kW), "--height",
+                                      std::to_string(kH), "--threads", "2", "--ready-file", ready_};
+        argv.insert(argv.end(), extra.begin(), extra.end());
+        return std::make_unique<Child>(argv, dir_ + "/viewer.log",
+                                       std::vector<std::pair<std::string, std::string>>{
+                                           {"DISPLAY", x_.display()}, {"ASAN_OPTIONS", asan_options_for_viewer()}});
+    }
+    static constexpr int kW = 160, kH = 120;
+    Xvfb x_;
+    std::string why_, ready_;
+    Image red_, blue_;
+};
+
+// --watch: saving the scene reloads it and renders again; the window then shows the new scene.
+TEST_F(ViewerOnScreen, AChangedSceneIsReloadedAndShown) {
+    auto viewer = start_viewer({"--watch"});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen1.png"), red_, first.image))
+        << "the red sphere is not on the screen (see " << dir_ << "/screen1.png)";
+
+    rewrite_scene(scene_, sphere_scene("0.1 0.1 0.9"));
+    Ready again;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, again,
+                               [&](const Ready& n) { return n.job > first.job && n.state == "finished"; }, 30s))
+        << "the changed scene was not rendered again:\n" << viewer->output();
+    EXPECT_FALSE(again.reused) << "the changed file must be loaded again";
+    EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen2.png"), blue_, again.image))
+        << "the blue sphere is not on the screen (see " << dir_ << "/screen2.png)";
+    kill(viewer->pid, SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
+// Without --watch a saved change is not picked up (until File > Reload, Ctrl+R).
+TEST_F(ViewerOnScreen, WithoutWatchAChangedSceneIsNotReloaded) {
+    if (find_on_path("xdotool").empty()) GTEST_SKIP() << "viewer screen test skipped: needs xdotool";
+    auto viewer = start_viewer({});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+
+    rewrite_scene(scene_, sphere_scene("0.1 0.1 0.9"));
+    // Nothing to wait for: give the viewer time for several checks of the file (one a second).
+    std::this_thread::sleep_for(2500ms);
+    Ready later;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, later, [](const Ready&) { return true; }, 5s)) << viewer->output();
+    EXPECT_EQ(later.job, first.job) << "the scene was rendered again without --watch";
+    EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen1.png"), red_, later.image))
+        << "the red sphere is no longer on the screen (see " << dir_ << "/screen1.png)";
+
+    // The change was real: reloading by hand shows it.
+    const std::string window = xdotool(x_.display(), "search --name whitted-view");
+    xdotool(x_.display(), "windowfocus --sync " + window + " key ctrl+r");
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, later,
+                               [&](const Ready& n) { return n.job > first.job && n.state == "finished"; }, 30s))
+        << viewer->output();
+    EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen2.png"), blue_, later.image))
+        << "the blue sphere is not on the screen after Reload (see " << dir_ << "/screen2.png)";
+    kill(viewer->pid, SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
+// Fit window: once a resize has settled the scene is rendered again (without loading it again)
+// at the size of the new image area; resizes in quick succession give one render.
+TEST_F(ViewerOnScreen, FitWindowRendersAgainAtTheNewSizeAfterAResize) {
+    if (find_on_path("xdotool").empty()) GTEST_SKIP() << "viewer screen test skipped: needs xdotool";
+    auto viewer = start_viewer({"--fit", "--window-size", "640x480"});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    ASSERT_EQ(first.window.w, 640);
+    EXPECT_EQ(first.area.w, 640);
+    EXPECT_LT(first.area.h, 480);
+    EXPECT_EQ(first.image.w, first.area.w);
+    EXPECT_EQ(first.image.h, first.area.h);
+    const int chrome_h = first.window.h - first.area.h;  // menu, tool and status bars
+
+    const std::string window = xdotool(x_.display(), "search --name whitted-view");
+    xdotool(x_.display(), "windowsize " + window + " 600 400 windowsize " + window + " 700 500");
+    Ready r;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, r,
+                               [&](const Ready& n) {
+                                   return n.window.w == 700 && n.window.h == 500 && n.job > first.job &&
+                                          n.state == "finished";
+                               },
+                               30s))
+        << "no render at the new size:\n" << viewer->output();
+    EXPECT_EQ(r.job, first.job + 1) << "one render for the resizes, after they settled";
+    EXPECT_TRUE(r.reused) << "the unchanged scene is not loaded again";
+    EXPECT_EQ(r.area.w, 700);
+    EXPECT_EQ(r.area.h, 500 - chrome_h);
+    const Image expected = cli_image(scene_, r.area.w, r.area.h, dir_ + "/fitted.png");
+    EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen.png"), expected, r.image))
+        << "the image at the new size is not on the screen (see " << dir_ << "/screen.png)";
+    kill(viewer->pid, SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
+// The text FLTK draws for a label: "@@" is a literal '@'; any other '@' starts a symbol (shown
+// here as "<symbol>"), and the name would not show as written.
+std::string drawn_text(const std::string& label) {
+    std::string out;
+    for (std::size_t i = 0; i < label.size(); ++i) {
+        if (label[i] != '@') out += label[i];
+        else if (i + 1 < label.size() && label[i + 1] == '@') out += label[i++];
+        else return out + "<symbol>";
+    }
+    return out;
+}
+
+// Names with '@' (the scene's, a texture's) show as written in the status bar and the panel.
+TEST_F(ViewerOnScreen, NamesWithAnAtSignShowAsWritten) {
+    scene_ = dir_ + "/a@b.sc";
+    std::ofstream(scene_) << sphere_scene("1 1 1", "t@x.png");
+    auto viewer = start_viewer({"--missing-textures", "checker"});
+    Ready r;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, r, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    EXPECT_EQ(drawn_text(r.labels["scene"]).rfind(" a@b.sc: 1 objects", 0), 0u) << r.labels["scene"];
+    const std::string warning = scene_ + ":4:";
+    const std::string texture = "warning: texture 't@x.png': not found (drawn as a checkerboard)";
+    const std::string message = drawn_text(r.labels["message"]);
+    EXPECT_EQ(message.rfind(" " + warning, 0), 0u) << r.labels["message"];
+    EXPECT_NE(message.find(texture), std::string::npos) << r.labels["message"];
+    ASSERT_FALSE(r.panel.empty());
+    EXPECT_EQ(r.panel[0].rfind(warning, 0), 0u) << r.panel[0];
+    EXPECT_NE(r.panel[0].find(texture), std::string::npos) << r.panel[0];
+    kill(viewer->pid, SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
 }  // namespace
