@@ -71,6 +71,9 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 1000));
     app.add_option("--aa", o.settings.aa, "Anti-aliasing: N x N rays per pixel, averaged")
         ->check(CLI::Range(1, kMaxAa));
+    app.add_option("--aa-threshold", o.settings.aa_threshold,
+                   "Adaptive anti-aliasing: only where a pixel differs from a neighbour by more (0-1); 0 = everywhere")
+        ->check(CLI::Range(0.0f, 1.0f));
     app.add_option("--mode", mode_name, "Render mode")->check(CLI::IsMember({"whitted", "raycast", "normals", "depth"}));
     app.add_option("--threads", o.settings.threads, "Worker threads (0 = all hardware threads)")
         ->check(CLI::Range(0, 1024));

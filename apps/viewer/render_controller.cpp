@@ -97,6 +97,7 @@ void RenderController::begin_locked(std::shared_ptr<Job> job, const std::string&
     job->settings.height = std::max(1, settings.height);
     job->settings.max_depth = std::max(0, settings.max_depth);
     job->settings.aa = std::clamp(settings.aa, 1, kMaxAa);
+    job->settings.aa_threshold = std::clamp(settings.aa_threshold, 0.0f, 1.0f);
     job->settings.threads = std::max(0, settings.threads);
     job->settings.tile_size = std::max(1, settings.tile_size);
     current_ = job;
@@ -206,6 +207,7 @@ void RenderController::run(std::shared_ptr<Job> job) {
     options.height = s.height;
     options.max_depth = s.max_depth;
     options.aa = s.aa;
+    options.aa_threshold = s.aa_threshold;
     options.mode = s.mode;
     options.threads = s.threads;
     options.tile_size = s.tile_size;

@@ -38,6 +38,7 @@ struct RenderSettings {
     int max_depth = 5;
     RenderMode mode = RenderMode::Whitted;
     int aa = 1;       // anti-aliasing: aa × aa rays per pixel
+    float aa_threshold = 0.0f;  // > 0: adaptive (see Sampling)
     int threads = 0;  // 0 = all hardware threads
     int tile_size = 32;
 };

@@ -167,6 +167,7 @@ TEST(RenderController, RestartWhileRunningCancelsThePreviousJob) {
     small.height = 48;
     small.threads = 2;
     small.aa = 2;  // the settings of the new job, anti-aliasing included, reach its render
+    small.aa_threshold = 0.05f;
     const auto t0 = Clock::now();
     c.start(scene, small);
     EXPECT_LT(Clock::now() - t0, 50ms) << "start() must not wait for the previous render";
@@ -184,6 +185,7 @@ TEST(RenderController, RestartWhileRunningCancelsThePreviousJob) {
     o.width = 64;
     o.height = 48;
     o.aa = 2;
+    o.aa_threshold = 0.05f;
     Image direct(64, 48);
     render(*scene, o, direct);
     EXPECT_EQ(img.rgb, direct.rgb);
