@@ -3,24 +3,37 @@
 # thread count, alternating the two renderers run by run, and prints the median wall time of the
 # whole process (parse + build + render + write) of each and their ratio.
 #
-#   bench/compare_povray.sh [-n RUNS] [-t THREADS] [-W WIDTH] [-H HEIGHT] [-d DEPTH] [-b BUILD_DIR] [SCENE.sc ...]
+#   bench/compare_povray.sh [-n RUNS] [-t THREADS] [-W WIDTH] [-H HEIGHT] [-d DEPTH] [-b BUILD_DIR]
+#                           [-a N [-T THRESHOLD]] [SCENE.sc ...]
 #
 # Defaults: 5 runs, all hardware threads, 640×480, depth 5, build/ (needs build/apps/cli/whitted),
 # scenes bench/scenes/small.sc and bench/scenes/grid10k.sc. Every SCENE.sc needs a SCENE.pov next
 # to it. Depth: whitted's --max-depth D traces the camera ray plus D bounces; POV-Ray counts the
 # camera ray as level 1, so it gets max_trace_level D+1 (patched into a temporary copy). No
-# anti-aliasing in either.
+# anti-aliasing in either unless -a N (N >= 2): whitted --aa N (N x N rays per pixel on a regular
+# grid of sub-pixel centres) against POV-Ray's non-recursive method +AM1 +RN -J (N x N rays on the
+# same grid plus the centre ray, no jitter), every pixel (whitted threshold 0, POV-Ray +A0.0), or
+# with -T T adaptive: whitted --aa-threshold T, POV-Ray +AT (not the same test: whitted compares the
+# largest channel difference with the 4 neighbours, POV-Ray the sum over the channels, gamma-encoded,
+# with the left and upper neighbours; see bench/RESULTS.md for how many pixels each supersamples).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-runs=5 threads="$(nproc)" width=640 height=480 depth=5 build="$here/../build"
-while getopts "n:t:W:H:d:b:" opt; do
+runs=5 threads="$(nproc)" width=640 height=480 depth=5 build="$here/../build" aa=1 aa_threshold=0
+while getopts "n:t:W:H:d:b:a:T:" opt; do
   case "$opt" in
     n) runs="$OPTARG" ;; t) threads="$OPTARG" ;; W) width="$OPTARG" ;; H) height="$OPTARG" ;;
-    d) depth="$OPTARG" ;; b) build="$OPTARG" ;;
-    *) sed -n '2,12p' "$0"; exit 1 ;;
+    d) depth="$OPTARG" ;; b) build="$OPTARG" ;; a) aa="$OPTARG" ;; T) aa_threshold="$OPTARG" ;;
+    *) sed -n '2,18p' "$0"; exit 1 ;;
   esac
 done
 shift $((OPTIND - 1))
+w_aa=() p_aa=(-A) aa_desc="no AA"
+if ((aa > 1)); then
+  w_aa=(--aa "$aa" --aa-threshold "$aa_threshold")
+  p_threshold="$aa_threshold"; [[ "$p_threshold" == *.* ]] || p_threshold="$p_threshold.0"  # POV-Ray rejects +A0
+  p_aa=(+AM1 +A"$p_threshold" +R"$aa" -J)
+  aa_desc="AA ${aa}x${aa} (whitted --aa $aa --aa-threshold $aa_threshold; POV-Ray ${p_aa[*]})"
+fi
 scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=("$here/scenes/small.sc" "$here/scenes/grid10k.sc")
 whitted="$build/apps/cli/whitted"
@@ -47,7 +60,7 @@ now() { date +%s.%N; }
 median() { sort -g | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
 
 echo "$povray_version; machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) hardware threads; load: $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "size ${width}x${height}, depth $depth (POV-Ray max_trace_level $((depth + 1))), $threads threads, no AA, $runs alternating runs each, median wall time of the whole process"
+echo "size ${width}x${height}, depth $depth (POV-Ray max_trace_level $((depth + 1))), $threads threads, $aa_desc, $runs alternating runs each, median wall time of the whole process"
 printf "%-14s %12s %12s %9s\n" scene whitted_s povray_s ratio
 for sc in "${scenes[@]}"; do
   pov="${sc%.sc}.pov"
@@ -56,9 +69,9 @@ for sc in "${scenes[@]}"; do
   : > "$tmp/w.times"; : > "$tmp/p.times"
   for ((i = 0; i < runs; i++)); do
     t0=$(now)
-    "$whitted" "$sc" -o "$tmp/w.png" --width "$width" --height "$height" --max-depth "$depth" --threads "$threads" -q
+    "$whitted" "$sc" -o "$tmp/w.png" --width "$width" --height "$height" --max-depth "$depth" --threads "$threads" "${w_aa[@]}" -q
     t1=$(now)
-    povray +I"$tmp/scene.pov" +O"$tmp/p.png" +W"$width" +H"$height" -A -D -V -GA +WT"$threads" 2>"$tmp/povray.log" ||
+    povray +I"$tmp/scene.pov" +O"$tmp/p.png" +W"$width" +H"$height" "${p_aa[@]}" -D -V -GA +WT"$threads" 2>"$tmp/povray.log" ||
       { echo "compare_povray: POV-Ray failed on $pov:" >&2; cat "$tmp/povray.log" >&2; exit 1; }
     t2=$(now)
     echo "$t1 - $t0" | bc -l >> "$tmp/w.times"
