@@ -81,7 +81,15 @@ struct FileSink {
 bool encode(const Image& image, const std::string& ext, FileSink& sink) {
     const int w = image.width, h = image.height;
     const auto* px = image.rgb.data();
-    if (ext == ".png") return stbi_write_png_to_func(FileSink::callback, &sink, w, h, 3, px, w * 3) != 0;
+    if (ext == ".png") {
+        // stb tries all five PNG filters on every row and searches long match chains by default:
+        // half of a small render's whole run went into that. One filter (Sub) and stb's shortest
+        // chains encode 640×480 renders in half the time, the files 2–8% larger (measured on the
+        // bench and bundled scenes). Set once: these are stb's globals.
+        static const bool tuned = (stbi_write_png_compression_level = 5, stbi_write_force_png_filter = 1, true);
+        (void)tuned;
+        return stbi_write_png_to_func(FileSink::callback, &sink, w, h, 3, px, w * 3) != 0;
+    }
     if (ext == ".bmp") return stbi_write_bmp_to_func(FileSink::callback, &sink, w, h, 3, px) != 0;
     if (ext == ".jpg" || ext == ".jpeg") return stbi_write_jpg_to_func(FileSink::callback, &sink, w, h, 3, px, 95) != 0;
     const std::string header = "P6\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
