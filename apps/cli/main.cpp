@@ -90,6 +90,10 @@ int run(int argc, char** argv) {
         std::cerr << "whitted: error: cannot write '" << output << "': use .png, .bmp, .ppm, .jpg or .jpeg\n";
         return kExitUsage;
     }
+    if (std::string problem = output_problem(width, height, output); !problem.empty()) {
+        std::cerr << "whitted: error: " << problem << "\n";  // said before the render, not after
+        return kExitUsage;
+    }
     if (same_file(output, scene_path)) {
         std::cerr << "whitted: error: the output '" << output << "' is the scene file itself; name another with -o\n";
         return kExitUsage;

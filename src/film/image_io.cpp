@@ -106,18 +106,24 @@ bool is_supported_output(const std::string& path) {
     return ext == ".png" || ext == ".bmp" || ext == ".ppm" || ext == ".jpg" || ext == ".jpeg";
 }
 
-std::string write_image(const Image& image, const std::string& path) {
+std::string output_problem(int width, int height, const std::string& path) {
     if (!is_supported_output(path))
         return "cannot write '" + path + "': unknown image format (use .png, .bmp, .ppm, .jpg or .jpeg)";
-    if (image.width <= 0 || image.height <= 0) return "cannot write '" + path + "': the image is empty";
+    if (width <= 0 || height <= 0) return "cannot write '" + path + "': the image is empty";
     const std::string ext = extension_of(path);
     // stb's PNG and BMP writers count the whole file in an int (and JPEG its size in 16 bits).
-    const std::size_t row = std::size_t(image.width) * 3 + 4;  // with a PNG filter byte or BMP padding
-    if ((ext == ".png" || ext == ".bmp") && row * std::size_t(image.height) > std::size_t(INT_MAX) - 1024)
-        return "cannot write '" + path + "': " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+    const std::size_t row = std::size_t(width) * 3 + 4;  // with a PNG filter byte or BMP padding
+    if ((ext == ".png" || ext == ".bmp") && row * std::size_t(height) > std::size_t(INT_MAX) - 1024)
+        return "cannot write '" + path + "': " + std::to_string(width) + "x" + std::to_string(height) +
                " is too large for " + ext + " (over 2 GB of pixels); use .ppm";
-    if ((ext == ".jpg" || ext == ".jpeg") && (image.width > 65535 || image.height > 65535))
+    if ((ext == ".jpg" || ext == ".jpeg") && (width > 65535 || height > 65535))
         return "cannot write '" + path + "': JPEG images are at most 65535 pixels wide and high; use .png or .ppm";
+    return "";
+}
+
+std::string write_image(const Image& image, const std::string& path) {
+    if (std::string problem = output_problem(image.width, image.height, path); !problem.empty()) return problem;
+    const std::string ext = extension_of(path);
     if (image.rgb.size() != std::size_t(image.width) * std::size_t(image.height) * 3)
         return "cannot write '" + path + "': the image's pixels do not match its size";
     // Same directory as the target, so that the rename is atomic; a random suffix keeps

@@ -16,6 +16,10 @@ std::string write_image(const Image& image, const std::string& path);
 // and unlink the file, so that not even an exit in mid-write leaves a partial file behind.
 const char* image_file_being_written();
 
+// Why write_image would refuse a width × height image at `path` (an unknown extension, a size
+// the format cannot hold), or "": a frontend asks before spending a render on it.
+std::string output_problem(int width, int height, const std::string& path);
+
 // True for the extensions write_image understands (.png .bmp .ppm .jpg .jpeg).
 bool is_supported_output(const std::string& path);
 
