@@ -12,6 +12,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <thread>
 
@@ -229,6 +230,18 @@ Ready read_ready(const std::string& path) {
     return r;
 }
 
+// The text FLTK draws for a label: "@@" is a literal '@'; any other '@' starts a symbol (shown
+// here as "<symbol>"), and the name would not show as written.
+std::string drawn_text(const std::string& label) {
+    std::string out;
+    for (std::size_t i = 0; i < label.size(); ++i) {
+        if (label[i] != '@') out += label[i];
+        else if (i + 1 < label.size() && label[i + 1] == '@') out += label[i++];
+        else return out + "<symbol>";
+    }
+    return out;
+}
+
 // Where `part` appears in `whole` (every pixel within 1 level), or {-1, -1}.
 std::pair<int, int> find_subimage(const Image& whole, const Image& part, std::pair<int, int> hint) {
     auto matches_at = [&](int ox, int oy) {
@@ -327,10 +340,24 @@ TEST_F(ViewerE2E, ASceneWithErrorsIsReportedNotACrash) {
     std::string why;
     if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
     std::ofstream(scene_) << "camera [ eye 0 0 5 ]\nmastersubgraph root [ trans [ object blob [ ] ] ]\n";
-    Child viewer({WHITTED_VIEWER_PATH, scene_, "--exit-when-done"}, dir_ + "/viewer.log",
+    const std::string ready = dir_ + "/ready.txt";
+    Child viewer({WHITTED_VIEWER_PATH, scene_, "--exit-when-done", "--ready-file", ready}, dir_ + "/viewer.log",
                  {{"DISPLAY", x.display()}, {"ASAN_OPTIONS", asan_options_for_viewer()}});
-    EXPECT_EQ(viewer.wait_exit(60s), 2) << viewer.output();
-    EXPECT_NE(viewer.output().find(scene_ + ":2:"), std::string::npos) << viewer.output();
+    ASSERT_EQ(viewer.wait_exit(60s), 2) << viewer.output();
+    const std::string output = viewer.output();
+    EXPECT_NE(output.find(scene_ + ":2:"), std::string::npos) << output;
+
+    // The window showed the error, as FILE:LINE:COL: error: ..., in the messages panel and the status bar.
+    Ready r = read_ready(ready);
+    EXPECT_EQ(r.state, "failed");
+    ASSERT_EQ(r.panel.size(), 1u) << output;
+    const std::string& error = r.panel[0];
+    ASSERT_EQ(error.rfind(scene_ + ":2:", 0), 0u) << error;
+    const std::regex column_and_text("^[0-9]+: error: unknown object type 'blob'");
+    EXPECT_TRUE(std::regex_search(error.substr(scene_.size() + 3), column_and_text)) << error;
+    EXPECT_NE(output.find(error + "\n"), std::string::npos) << "the panel and stderr differ:\n" << output;
+    EXPECT_EQ(drawn_text(r.labels["message"]), " " + error);
+    EXPECT_EQ(drawn_text(r.labels["progress"]), " the scene has errors");
 }
 
 // Waits until the viewer has written a ready file that `good` accepts; the file is read whole
@@ -548,7 +575,22 @@ protected:
         argv.insert(argv.end(), extra.begin(), extra.end());
         return std::make_unique<Child>(argv, dir_ + "/viewer.log",
                                        std::vector<std::pair<std::string, std::string>>{
-                                           {"DISPLAY", x_.display()}, {"ASAN_OPTIONS", asan_options_for_viewer()}});
+                                           {"DISPLAY", x_.display()},
+                                           {"ASAN_OPTIONS", asan_options_for_viewer()},
+                                           {"WHITTED_VIEW_TEST_DIR", dir_}});  // see processes_left()
+    }
+    // Processes the viewer started (it included) that are still running: they have its environment.
+    std::vector<pid_t> processes_left() const {
+        const std::string marker = "WHITTED_VIEW_TEST_DIR=" + dir_;
+        std::vector<pid_t> left;
+        for (const auto& entry : fs::directory_iterator("/proc")) {
+            const std::string name = entry.path().filename().string();
+            if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+            std::ifstream in(entry.path() / "environ");
+            for (std::string var; std::getline(in, var, '\0');)
+                if (var == marker) left.push_back(pid_t(std::stoi(name)));
+        }
+        return left;
     }
     static constexpr int kW = 160, kH = 120;
     Xvfb x_;
@@ -642,18 +684,6 @@ TEST_F(ViewerOnScreen, FitWindowRendersAgainAtTheNewSizeAfterAResize) {
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
-// The text FLTK draws for a label: "@@" is a literal '@'; any other '@' starts a symbol (shown
-// here as "<symbol>"), and the name would not show as written.
-std::string drawn_text(const std::string& label) {
-    std::string out;
-    for (std::size_t i = 0; i < label.size(); ++i) {
-        if (label[i] != '@') out += label[i];
-        else if (i + 1 < label.size() && label[i + 1] == '@') out += label[i++];
-        else return out + "<symbol>";
-    }
-    return out;
-}
-
 // Names with '@' (the scene's, a texture's) show as written in the status bar and the panel.
 TEST_F(ViewerOnScreen, NamesWithAnAtSignShowAsWritten) {
     scene_ = dir_ + "/a@b.sc";
@@ -673,6 +703,124 @@ TEST_F(ViewerOnScreen, NamesWithAnAtSignShowAsWritten) {
     EXPECT_NE(r.panel[0].find(texture), std::string::npos) << r.panel[0];
     kill(viewer->pid, SIGTERM);
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
+// The ids of the mapped windows on `display` whose title matches `name` (a regular expression).
+std::vector<std::string> visible_windows(const std::string& display, const std::string& name) {
+    auto r = run_process({"/bin/sh", "-c", "DISPLAY=" + display + " '" + find_on_path("xdotool") +
+                                               "' search --onlyvisible --name '" + name + "' 2>/dev/null"});
+    std::vector<std::string> ids;
+    std::istringstream in(r.output);
+    for (std::string id; in >> id;) ids.push_back(id);
+    return ids;
+}
+
+// Waits up to `timeout` for a mapped window titled `name`; returns its id, or "".
+std::string wait_for_window(const std::string& display, const std::string& name, std::chrono::seconds timeout) {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    for (;;) {
+        const std::vector<std::string> ids = visible_windows(display, name);
+        if (!ids.empty()) return ids.front();
+        if (std::chrono::steady_clock::now() >= deadline) return "";
+        std::this_thread::sleep_for(50ms);
+    }
+}
+
+// A window's place and size in root-window coordinates.
+Box window_geometry(const std::string& display, const std::string& id) {
+    auto r = run_process({"/bin/sh", "-c", "DISPLAY=" + display + " '" + find_on_path("xdotool") +
+                                               "' getwindowgeometry --shell " + id + " 2>/dev/null"});
+    Box b;
+    std::istringstream in(r.output);
+    for (std::string line; std::getline(in, line);) {
+        const std::size_t eq = line.find('=');
+        if (eq == std::string::npos) continue;
+        const std::string key = line.substr(0, eq);
+        const int value = std::atoi(line.c_str() + eq + 1);
+        if (key == "X") b.x = value;
+        else if (key == "Y") b.y = value;
+        else if (key == "WIDTH") b.w = value;
+        else if (key == "HEIGHT") b.h = value;
+    }
+    return b;
+}
+
+// Whether the screen shows a dialog at `box`: light grey and white (its background and list)
+// with dark text. Behind it is the dark grey image area.
+bool shows_a_dialog(const Image& screen, const Box& box) {
+    if (box.w <= 0 || box.h <= 0 || box.x < 0 || box.y < 0 || box.right() > screen.width ||
+        box.y + box.h > screen.height)
+        return false;
+    int light = 0, dark = 0;
+    for (int y = box.y; y < box.y + box.h; ++y)
+        for (int x = box.x; x < box.right(); ++x) {
+            const glm::ivec3 c(screen.at(x, y));
+            light += std::min({c.x, c.y, c.z}) >= 150;
+            dark += std::max({c.x, c.y, c.z}) < 80;
+        }
+    const int all = box.w * box.h;
+    return light > all * 8 / 10 && dark > all / 200;
+}
+
+// A texture that is not found: the viewer asks for its file in a dialog; Cancel draws it as the
+// magenta/black checkerboard, with a warning naming it; the viewer then quits cleanly.
+TEST_F(ViewerOnScreen, CancellingTheMissingTextureDialogDrawsACheckerboard) {
+    if (find_on_path("xdotool").empty()) GTEST_SKIP() << "viewer screen test skipped: needs xdotool";
+    std::ofstream(scene_) << sphere_scene("1 1 1", "nowhere.png");
+    auto viewer = start_viewer({"--mode", "raycast"});  // unlit: the texture's own colours
+
+    // The dialog is mapped and drawn on the screen while the viewer waits for an answer.
+    const std::string dialog = wait_for_window(x_.display(), "^Texture not found$", 60s);
+    ASSERT_FALSE(dialog.empty()) << "no dialog was shown:\n" << viewer->output();
+    const Box d = window_geometry(x_.display(), dialog);
+    ASSERT_EQ(d.w, 640) << "the dialog's width, as made in ask_texture_dialog()";
+    bool shown = false;
+    for (auto deadline = std::chrono::steady_clock::now() + 10s;
+         !shown && std::chrono::steady_clock::now() < deadline; std::this_thread::sleep_for(50ms))
+        shown = shows_a_dialog(grab_screen(x_.display(), dir_ + "/dialog.png"), d);
+    ASSERT_TRUE(shown) << "the dialog is not on the screen (see " << dir_ << "/dialog.png)";
+    EXPECT_EQ(visible_windows(x_.display(), "^Texture not found$").size(), 1u);
+
+    // A click on "Cancel (checkerboard)": 180×28 at (w - 340, h - 38) in the dialog.
+    xdotool(x_.display(), "mousemove --window " + dialog + " " + std::to_string(d.w - 250) + " " +
+                              std::to_string(d.h - 24) + " click 1");
+    Ready r;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, r, [](const Ready& n) { return n.state == "finished"; }, 60s))
+        << "no render after Cancel:\n" << viewer->output();
+    EXPECT_TRUE(visible_windows(x_.display(), "Texture").empty()) << "the dialog, or a file chooser, is open";
+
+    // Inside the sphere (about 36 pixels across, in the middle) only the board's colours and
+    // their blends at the squares' edges: both colours, and nothing off the line between them.
+    const Image screen = grab_screen(x_.display(), dir_ + "/checker.png");
+    ASSERT_EQ(r.image.w, kW);
+    ASSERT_EQ(r.image.h, kH);
+    int magenta = 0, black = 0, other = 0;
+    const int cx = r.image.x + kW / 2, cy = r.image.y + kH / 2;
+    for (int y = cy - 8; y < cy + 8; ++y)
+        for (int x = cx - 8; x < cx + 8; ++x) {
+            const glm::ivec3 c(screen.at(x, y));
+            if (c.x >= 254 && c.y <= 1 && c.z >= 254) ++magenta;
+            else if (c.x <= 1 && c.y <= 1 && c.z <= 1) ++black;
+            else if (c.y > 1 || std::abs(c.x - c.z) > 1) ++other;
+        }
+    EXPECT_GT(magenta, 0) << "see " << dir_ << "/checker.png";
+    EXPECT_GT(black, 0) << "see " << dir_ << "/checker.png";
+    EXPECT_EQ(other, 0) << "see " << dir_ << "/checker.png";
+
+    // The messages panel names the texture; the status bar has a warning.
+    ASSERT_FALSE(r.panel.empty());
+    EXPECT_EQ(r.panel[0].rfind(scene_ + ":4:", 0), 0u) << r.panel[0];
+    EXPECT_NE(r.panel[0].find("warning: texture 'nowhere.png': not found (drawn as a checkerboard)"),
+              std::string::npos)
+        << r.panel[0];
+    EXPECT_EQ(drawn_text(r.labels["message"]).rfind(" warning: ", 0), 0u) << r.labels["message"];
+
+    // File > Quit (Ctrl+Q) ends it with 0, leaving no process behind.
+    const std::vector<std::string> main_window = visible_windows(x_.display(), "^whitted-view");
+    ASSERT_EQ(main_window.size(), 1u);
+    xdotool(x_.display(), "windowfocus --sync " + main_window[0] + " key ctrl+q");
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+    EXPECT_EQ(processes_left(), std::vector<pid_t>{});
 }
 
 }  // namespace
