@@ -542,6 +542,7 @@ void ViewerWindow::show_messages(const RenderStatus& st) {
 
 void ViewerWindow::ask_for_textures(const RenderStatus& st) {
     bool declined = false;
+    std::string declined_names;  // for the status bar: which textures are checkerboards now
     for (const MissingTexture& mt : st.missing_textures) {
         std::string where = base_name(mt.loc.file.empty() ? scene_ : mt.loc.file) + " line " + std::to_string(mt.loc.line);
         const int answer = ask_texture_dialog(mt, where, *this);
@@ -556,15 +557,19 @@ void ViewerWindow::ask_for_textures(const RenderStatus& st) {
             if (chooser.show() == 0 && chooser.filename()) picked = chooser.filename();
         }
         if (quitting_) return;
-        if (picked.empty()) declined = true;
-        else texture_overrides_[mt.name] = picked;
+        if (picked.empty()) {
+            declined = true;
+            declined_names += (declined_names.empty() ? "'" : ", '") + mt.name + "'";
+        } else {
+            texture_overrides_[mt.name] = picked;
+        }
     }
     if (declined) {
         checker_scenes_.insert(scene_);
         extra_message_ = "";
     }
     render(true);
-    if (declined) set_message("warning: missing textures are drawn as a checkerboard");
+    if (declined) set_message("warning: texture " + declined_names + " drawn as a checkerboard (not found)");
 }
 
 void ViewerWindow::watch() {
