@@ -82,38 +82,126 @@ glm::vec3 WhittedIntegrator::debug_view(const Ray& ray, const Hit* hit) const {
     return glm::vec3(0.0f);
 }
 
+// What reaches `start` (just off the lit side of a surface) from `light`: 1 if nothing is in the
+// way, 0 behind anything opaque, the product of the transparent colours crossed otherwise.
+glm::vec3 WhittedIntegrator::shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start) const {
+    const FlatScene& flat = scene_.flat;
+    if (light.type != LightType::Directional) {
+        // From the light to the point (t in (0, 1)): the nearest thing on the way decides it,
+        // unless it is glass, whose every crossing on the way counts.
+        Hit h;
+        if (!intersect_nearest(scene_.bvh, flat.instances, Ray{light.position, start - light.position}, 0.0f, 1.0f, h))
+            return glm::vec3(1.0f);
+        if (!flat.materials[flat.instances[h.instance].material].is_transparent()) return glm::vec3(0.0f);
+    }
+    return through_glass(light, ls, start);
+}
+
+// The full query from the point toward the light: every transparent surface crossed tints it.
+glm::vec3 WhittedIntegrator::through_glass(const Light& light, const LightSample& ls, const glm::vec3& start) const {
+    const FlatScene& flat = scene_.flat;
+    const float reach = std::isinf(ls.distance) ? kInfinity : glm::length(light.position - start);
+    return transmittance(scene_.bvh, flat.instances, flat.materials, Ray{start, ls.to_light}, 0.0f, reach);
+}
+
+void WhittedIntegrator::camera_packet(const Ray (&rays)[kPacketSize], unsigned active, const Hit (&hits)[kPacketSize],
+                                      unsigned found, glm::vec3 (&colors)[kPacketSize], RayCounts& counts) const {
+    if (options_.mode != RenderMode::Whitted) {
+        for (int l = 0; l < kPacketSize; ++l)
+            if ((active >> l) & 1) colors[l] = camera_ray(rays[l], (found >> l) & 1 ? &hits[l] : nullptr, counts);
+        return;
+    }
+    const FlatScene& flat = scene_.flat;
+    found &= active;
+    ShadingPoint points[kPacketSize];
+    for (int l = 0; l < kPacketSize; ++l)
+        if ((found >> l) & 1) points[l] = shading_point(rays[l], hits[l]);
+    // The shadow rays toward each point or spot light, traced together from the light: they share
+    // their origin and fan out over neighbouring points, as coherent as the camera rays were.
+    // Exactly shadow_factor's first query, so the colours are those of camera_ray one by one.
+    PacketShadows shadows;
+    const std::size_t packet_lights = std::min(flat.lights.size(), std::size_t(kPacketLights));
+    for (std::size_t li = 0; li < packet_lights; ++li) {
+        const Light& light = flat.lights[li];
+        if (light.type == LightType::Directional) continue;
+        Ray back[kPacketSize];
+        unsigned want = 0;
+        for (int l = 0; l < kPacketSize; ++l) {
+            if (!((found >> l) & 1) || !faces_light(points[l], sample_light(light, points[l].s.point))) continue;
+            back[l] = Ray{light.position, points[l].above - light.position};
+            want |= 1u << l;
+        }
+        if (!want) continue;
+        Hit blockers[kPacketSize];
+        const unsigned blocked = intersect_nearest_packet(scene_.bvh, flat.instances, back, want, 0.0f, 1.0f, blockers);
+        for (int l = 0; l < kPacketSize; ++l) {
+            if (!((want >> l) & 1)) continue;
+            shadows.query[li][l] = !((blocked >> l) & 1) ? ShadowQuery::Lit
+                                   : flat.materials[flat.instances[blockers[l].instance].material].is_transparent()
+                                       ? ShadowQuery::Glass
+                                       : ShadowQuery::Blocked;
+        }
+    }
+    for (int l = 0; l < kPacketSize; ++l) {
+        if (!((active >> l) & 1)) continue;
+        ++counts.camera;
+        colors[l] = (found >> l) & 1 ? shade_at(points[l], 0, glm::vec3(1.0f), counts, &shadows, l) : flat.background;
+    }
+}
+
 glm::vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const glm::vec3& weight, RayCounts& counts) const {
     Hit hit;
     return shade(ray, nearest_hit(scene_, ray, hit) ? &hit : nullptr, depth, weight, counts);
 }
 
+WhittedIntegrator::ShadingPoint WhittedIntegrator::shading_point(const Ray& ray, const Hit& hit) const {
+    ShadingPoint p;
+    p.s = surface_at(scene_, ray, hit);
+    p.dir = glm::normalize(ray.direction);
+    p.outside = glm::dot(p.s.normal, -p.dir) >= 0.0f;
+    p.n = p.outside ? p.s.normal : -p.s.normal;  // faces the viewer: lighting only
+    const float offset = surface_offset(p.s.point);
+    p.above = p.s.point + offset * p.n;  // the viewer's side of the surface
+    p.below = p.s.point - offset * p.n;
+    return p;
+}
+
+// Whether `light` lights the point at all (before shadows): facing it, and not out of its cone.
+bool WhittedIntegrator::faces_light(const ShadingPoint& p, const LightSample& ls) {
+    return glm::dot(p.n, ls.to_light) > 0.0f && max_component(ls.intensity) > 0.0f;
+}
+
 // The colour along `ray` given its nearest hit (nullptr: none), at recursion depth `depth`.
 glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit* nearest, int depth, const glm::vec3& weight,
                                    RayCounts& counts) const {
+    if (!nearest) return scene_.flat.background;
+    return shade_at(shading_point(ray, *nearest), depth, weight, counts, nullptr, 0);
+}
+
+glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight, RayCounts& counts,
+                                      const PacketShadows* shadows, int lane) const {
     const FlatScene& flat = scene_.flat;
-    if (!nearest) return flat.background;
-    const Hit& hit = *nearest;
-    const Surface s = surface_at(scene_, ray, hit);
+    const Surface& s = p.s;
     const Material& m = *s.material;
-    const glm::vec3 dir = glm::normalize(ray.direction);
-    const glm::vec3 to_eye = -dir;
-    const bool outside = glm::dot(s.normal, to_eye) >= 0.0f;
-    const glm::vec3 n = outside ? s.normal : -s.normal;  // faces the viewer: lighting only
-    const float offset = surface_offset(s.point);
-    const glm::vec3 above = s.point + offset * n;  // the viewer's side of the surface
-    const glm::vec3 below = s.point - offset * n;
+    const glm::vec3 dir = p.dir, to_eye = -dir, n = p.n, above = p.above, below = p.below;
+    const bool outside = p.outside;
 
     glm::vec3 color = m.emit + s.ambient * flat.ambient_intensity;
 
-    for (const Light& light : flat.lights) {
+    for (std::size_t li = 0; li < flat.lights.size(); ++li) {
+        const Light& light = flat.lights[li];
         LightSample ls = sample_light(light, s.point);
-        float n_dot_l = glm::dot(n, ls.to_light);
-        if (n_dot_l <= 0.0f || max_component(ls.intensity) <= 0.0f) continue;
+        if (!faces_light(p, ls)) continue;
+        const float n_dot_l = glm::dot(n, ls.to_light);
         ++counts.shadow;
-        // The shadow ray starts on the lit side and stops short of a point or spot light.
-        glm::vec3 start = above;
-        float reach = std::isinf(ls.distance) ? kInfinity : glm::length(light.position - start);
-        glm::vec3 shadow = transmittance(scene_.bvh, flat.instances, flat.materials, Ray{start, ls.to_light}, 0.0f, reach);
+        // Camera-ray hits ask from the light first (so that a packet's shadow rays can share an
+        // origin, and one by one they get the same answer); deeper hits, whose shadow rays are
+        // not traced in packets, go straight to the query from the point, faster for single rays.
+        const ShadowQuery known = shadows && li < kPacketLights ? shadows->query[li][lane] : ShadowQuery::Unknown;
+        const glm::vec3 shadow = known == ShadowQuery::Lit                  ? glm::vec3(1.0f)
+                                 : known == ShadowQuery::Blocked            ? glm::vec3(0.0f)
+                                 : known == ShadowQuery::Glass || depth > 0 ? through_glass(light, ls, above)
+                                                                            : shadow_factor(light, ls, above);
         if (max_component(shadow) <= 0.0f) continue;
         glm::vec3 r = 2.0f * n_dot_l * n - ls.to_light;
         float r_dot_v = glm::dot(r, to_eye);

@@ -7,6 +7,8 @@
 
 #include "accel/bvh_packet.h"
 #include "accel/scene.h"
+#include "integrator/surface.h"
+#include "integrator/light_sample.h"
 #include "integrator/render_mode.h"
 
 namespace whitted {
@@ -41,10 +43,35 @@ public:
     // camera_ray(ray, counts) would find them one by one; bit l of the result = lane l hit.
     unsigned camera_hits(const Ray (&rays)[kPacketSize], unsigned active, Hit (&hits)[kPacketSize]) const;
 
+    // The colours of a packet of camera rays whose hits camera_hits found (`found`), exactly as
+    // camera_ray(ray, hit, counts) gives them one by one; the shadow rays toward point and spot
+    // lights from the packet's hits are traced as packets too.
+    void camera_packet(const Ray (&rays)[kPacketSize], unsigned active, const Hit (&hits)[kPacketSize], unsigned found,
+                       glm::vec3 (&colors)[kPacketSize], RayCounts& counts) const;
+
 private:
+    // A hit made ready for shading: its surface, the normal facing the viewer, the points just
+    // above and below it where secondary rays start.
+    struct ShadingPoint {
+        Surface s;
+        glm::vec3 dir, n, above, below;
+        bool outside;
+    };
+    // What a packet's shadow rays found for each lane and light (the first kPacketLights lights).
+    enum class ShadowQuery : unsigned char { Unknown, Lit, Blocked, Glass };
+    static constexpr std::size_t kPacketLights = 8;
+    struct PacketShadows {
+        ShadowQuery query[kPacketLights][kPacketSize] = {};
+    };
+    ShadingPoint shading_point(const Ray& ray, const Hit& hit) const;
+    static bool faces_light(const ShadingPoint& p, const LightSample& ls);
+    glm::vec3 shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight, RayCounts& counts,
+                       const PacketShadows* shadows, int lane) const;
+    glm::vec3 through_glass(const Light& light, const LightSample& ls, const glm::vec3& start) const;
     glm::vec3 trace(const Ray& ray, int depth, const glm::vec3& weight, RayCounts& counts) const;
     glm::vec3 shade(const Ray& ray, const Hit* nearest, int depth, const glm::vec3& weight, RayCounts& counts) const;
     glm::vec3 debug_view(const Ray& ray, const Hit* hit) const;
+    glm::vec3 shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start) const;
 
     const Scene& scene_;
     IntegratorOptions options_;

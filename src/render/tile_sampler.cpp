@@ -45,8 +45,8 @@ bool TileSampler::render(const Tile& t, Image& image, RayCounts& counts, const s
     if (sampling_.aa == 1) {
         for (int y = t.y0; y < t.y1; ++y) {
             if (stop_requested(cancel)) return false;
-            if ((y - t.y0) % kPacketHeight == 0) trace_band(t, y);
-            for (int x = t.x0; x < t.x1; ++x) store(image, x, y, shade_centre(t, x, y, counts));
+            if ((y - t.y0) % kPacketHeight == 0) trace_band(t, y, counts);
+            for (int x = t.x0; x < t.x1; ++x) store(image, x, y, band_at(t, x, y));
         }
         return true;
     }
@@ -67,8 +67,8 @@ bool TileSampler::render(const Tile& t, Image& image, RayCounts& counts, const s
                      std::min(image_h_, t.y1 + 1)};
     for (int y = apron.y0; y < apron.y1; ++y) {
         if (stop_requested(cancel)) return false;
-        if ((y - apron.y0) % kPacketHeight == 0) trace_band(apron, y);
-        for (int x = apron.x0; x < apron.x1; ++x) centre_at(apron, x, y) = clamped(shade_centre(apron, x, y, counts));
+        if ((y - apron.y0) % kPacketHeight == 0) trace_band(apron, y, counts);
+        for (int x = apron.x0; x < apron.x1; ++x) centre_at(apron, x, y) = clamped(band_at(apron, x, y));
     }
     for (int y = t.y0; y < t.y1; ++y) {
         if (stop_requested(cancel)) return false;
@@ -83,7 +83,7 @@ bool TileSampler::render(const Tile& t, Image& image, RayCounts& counts, const s
     return true;
 }
 
-void TileSampler::trace_band(const Tile& region, int y0) {
+void TileSampler::trace_band(const Tile& region, int y0, RayCounts& counts) {
     band_y0_ = y0;
     for (int x0 = region.x0; x0 < region.x1; x0 += kPacketWidth) {
         // Packets cut by the region's edges leave their outside lanes off.
@@ -97,23 +97,15 @@ void TileSampler::trace_band(const Tile& region, int y0) {
         }
         Hit hits[kPacketSize];
         const unsigned found = integrator_.camera_hits(rays, active, hits);
-        for (int l = 0; l < kPacketSize; ++l) {
-            if (!((active >> l) & 1)) continue;
-            CameraPixel& p = band_at(region, x0 + l % kPacketWidth, y0 + l / kPacketWidth);
-            p.ray = rays[l];
-            p.found = (found >> l) & 1;
-            if (p.found) p.hit = hits[l];
-        }
+        glm::vec3 colors[kPacketSize];
+        integrator_.camera_packet(rays, active, hits, found, colors, counts);
+        for (int l = 0; l < kPacketSize; ++l)
+            if ((active >> l) & 1) band_at(region, x0 + l % kPacketWidth, y0 + l / kPacketWidth) = colors[l];
     }
 }
 
-TileSampler::CameraPixel& TileSampler::band_at(const Tile& region, int x, int y) {
+glm::vec3& TileSampler::band_at(const Tile& region, int x, int y) {
     return band_[std::size_t(y - band_y0_) * std::size_t(band_w_) + std::size_t(x - region.x0)];
-}
-
-glm::vec3 TileSampler::shade_centre(const Tile& region, int x, int y, RayCounts& counts) {
-    const CameraPixel& p = band_at(region, x, y);
-    return integrator_.camera_ray(p.ray, p.found ? &p.hit : nullptr, counts);
 }
 
 // The rays of the listed pixels, pixel after pixel and sub-pixel row by row within each, are cut
@@ -133,10 +125,9 @@ void TileSampler::supersample(int y, int n, RayCounts& counts) {
         const unsigned active = (1u << lanes) - 1;
         Hit hits[kPacketSize];
         const unsigned found = integrator_.camera_hits(rays, active, hits);
-        for (int l = 0; l < lanes; ++l) {
-            const glm::vec3 c = integrator_.camera_ray(rays[l], (found >> l) & 1 ? &hits[l] : nullptr, counts);
-            means_[std::size_t((k0 + l) / per_pixel)] += clamped(c);
-        }
+        glm::vec3 colors[kPacketSize];
+        integrator_.camera_packet(rays, active, hits, found, colors, counts);
+        for (int l = 0; l < lanes; ++l) means_[std::size_t((k0 + l) / per_pixel)] += clamped(colors[l]);
     }
     for (int k = 0; k < n; ++k) means_[std::size_t(k)] /= float(per_pixel);
 }

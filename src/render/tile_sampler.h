@@ -47,15 +47,10 @@ public:
     bool render(const Tile& t, Image& image, RayCounts& counts, const std::atomic<bool>* cancel);
 
 private:
-    struct CameraPixel {
-        Ray ray;
-        Hit hit;
-        bool found;
-    };
-    // Finds the camera hits of rows [y0, y0 + kPacketHeight) of `region` a packet at a time.
-    void trace_band(const Tile& region, int y0);
-    CameraPixel& band_at(const Tile& region, int x, int y);
-    glm::vec3 shade_centre(const Tile& region, int x, int y, RayCounts& counts);
+    // The colours of rows [y0, y0 + kPacketHeight) of `region` seen through the pixel centres,
+    // traced and shaded a packet at a time.
+    void trace_band(const Tile& region, int y0, RayCounts& counts);
+    glm::vec3& band_at(const Tile& region, int x, int y);
     // Mean colours of pixels xs[0 .. n) of row y (into means_), aa × aa rays each.
     void supersample(int y, int n, RayCounts& counts);
     // True when pixel (x, y)'s centre colour differs from a neighbour's in `apron` (the tile
@@ -69,7 +64,7 @@ private:
     int image_w_, image_h_, band_w_;
     Sampling sampling_;
     int band_y0_ = 0;
-    std::vector<CameraPixel> band_;     // band_w_ × kPacketHeight camera hits
+    std::vector<glm::vec3> band_;       // band_w_ × kPacketHeight centre colours
     std::vector<glm::vec3> centres_;    // adaptive: the apron's centre colours, clamped
     std::vector<int> xs_;               // the pixels of a row to supersample
     std::vector<glm::vec3> means_;      // their colours

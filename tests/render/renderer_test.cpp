@@ -110,6 +110,23 @@ TEST(Renderer, PacketTracedCameraRaysChangeNoPixel) {
     LoadResult showcase = load_scene(std::string(WHITTED_SOURCE_DIR) + "/scenes/showcase.sc");
     ASSERT_TRUE(showcase.ok());
     expect_packets_change_nothing(*showcase.scene, "showcase");
+    // More lights than a packet's shadow rays are traced for (the rest one by one), glass casting
+    // tinted shadows in between opaque shapes, and a light inside the cluster.
+    test::SceneBuilder b;
+    Material glass, matte;
+    glass.diffuse = glm::vec3(0.1f);
+    glass.transparent = glm::vec3(0.7f, 0.8f, 0.9f);
+    glass.ior = 1.4f;
+    matte.specular = glm::vec3(0.3f);
+    matte.shine = 12;
+    for (int i = 0; i < 40; ++i) {
+        const float x = float(i % 8) - 3.5f, y = float(i / 8) - 2.0f;
+        b.add(ShapeKind(i % 4), test::translate_scale({x, y, -6.0f - float(i % 3)}, glm::vec3(0.8f)), i % 3 ? matte : glass);
+    }
+    for (int i = 0; i < 11; ++i)
+        b.light(test::point_light({float(i % 4) * 2 - 3, float(i % 3) * 2 - 2, i == 10 ? -7.0f : 3.0f},
+                                  glm::vec3(0.15f), {1, 0.05f, 0}));
+    expect_packets_change_nothing(b.build(), "eleven lights and glass");
 }
 
 TEST(Renderer, CancelStopsAfterTheCurrentRowsAndLeavesTheRestBlack) {
