@@ -61,6 +61,7 @@ int main(int argc, char** argv) {
     using namespace whitted::viewer;
     CLI::App app{"whitted-view: view and re-render SceneView/Ray .sc scenes (FLTK)"};
     app.set_version_flag("--version", "whitted-view 0.1.0");
+    app.option_defaults()->always_capture_default();
     ViewerOptions o;
     std::string mode_name = "whitted", missing = "ask";
     app.add_option("scene", o.scene, "Scene file (.sc) to open and render");
@@ -78,7 +79,8 @@ int main(int argc, char** argv) {
     app.add_option("--threads", o.settings.threads, "Worker threads (0 = all hardware threads)")
         ->check(CLI::Range(0, 1024));
     app.add_flag("--watch", o.watch, "Reload and render again when the scene file changes on disk");
-    app.add_option("--texture-path", o.texture_dirs, "Extra directory to look for textures in (repeatable)");
+    app.add_option("--texture-path", o.texture_dirs, "Extra directory to look for textures in (repeatable)")
+        ->default_str("");
     app.add_option("--missing-textures", missing, "A texture that cannot be found: ask for the file, or draw a checkerboard")
         ->check(CLI::IsMember({"ask", "checker"}));
     app.add_flag("--lenient", o.lenient, "Skip unknown keywords and object types with a warning");
