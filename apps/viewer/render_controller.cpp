@@ -21,6 +21,7 @@ std::string options_key(const LoadOptions& o) {
     k << o.lenient << '|' << int(o.textures.missing);
     for (const auto& d : o.textures.search_dirs) k << "|d:" << d;
     for (const auto& [name, file] : o.textures.overrides) k << "|o:" << name << '=' << file << '@' << file_stamp(file);
+    for (const auto& name : o.textures.checker_names) k << "|c:" << name;
     return k.str();
 }
 

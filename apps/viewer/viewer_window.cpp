@@ -327,9 +327,10 @@ LoadOptions ViewerWindow::load_options() const {
     o.lenient = options_.lenient;
     o.threads = int(threads_->value());  // the BVH build uses the same threads as the render
     o.textures.search_dirs = options_.texture_dirs;
-    o.textures.overrides = texture_overrides_;
-    o.textures.missing = options_.checker_textures || checker_scenes_.count(scene_) ? MissingTexturePolicy::Checker
-                                                                                    : MissingTexturePolicy::Error;
+    // The answers the user gave for this scene's missing textures (a file, or Cancel).
+    if (auto it = texture_overrides_.find(scene_); it != texture_overrides_.end()) o.textures.overrides = it->second;
+    if (auto it = declined_textures_.find(scene_); it != declined_textures_.end()) o.textures.checker_names = it->second;
+    o.textures.missing = options_.checker_textures ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
     return o;
 }
 
@@ -543,7 +544,9 @@ void ViewerWindow::show_messages(const RenderStatus& st) {
 void ViewerWindow::ask_for_textures(const RenderStatus& st) {
     bool declined = false;
     std::string declined_names;  // for the status bar: which textures are checkerboards now
+    std::set<std::string>& declined_here = declined_textures_[scene_];
     for (const MissingTexture& mt : st.missing_textures) {
+        if (declined_here.count(mt.name)) continue;  // answered before: drawn as a checkerboard
         std::string where = base_name(mt.loc.file.empty() ? scene_ : mt.loc.file) + " line " + std::to_string(mt.loc.line);
         const int answer = ask_texture_dialog(mt, where, *this);
         if (quitting_) return;
@@ -559,15 +562,13 @@ void ViewerWindow::ask_for_textures(const RenderStatus& st) {
         if (quitting_) return;
         if (picked.empty()) {
             declined = true;
+            declined_here.insert(mt.name);
             declined_names += (declined_names.empty() ? "'" : ", '") + mt.name + "'";
         } else {
-            texture_overrides_[mt.name] = picked;
+            texture_overrides_[scene_][mt.name] = picked;
         }
     }
-    if (declined) {
-        checker_scenes_.insert(scene_);
-        extra_message_ = "";
-    }
+    if (declined) extra_message_ = "";
     render(true);
     if (declined) set_message("warning: texture " + declined_names + " drawn as a checkerboard (not found)");
 }

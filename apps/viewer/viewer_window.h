@@ -117,8 +117,10 @@ private:
 
     // Remembered for the session: texture name as written → file the user picked; scenes for
     // which the user declined to pick (rendered with the checkerboard from then on).
-    std::map<std::string, std::string> texture_overrides_;
-    std::set<std::string> checker_scenes_;
+    // Per scene file: the files the user picked for missing textures, and the textures they
+    // declined to look for (checkerboards); remembered for the session.
+    std::map<std::string, std::map<std::string, std::string>> texture_overrides_;
+    std::map<std::string, std::set<std::string>> declined_textures_;
 };
 
 // Set by SIGINT/SIGTERM; the window quits cleanly at its next poll.

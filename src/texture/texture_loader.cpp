@@ -162,7 +162,8 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
         if (reason.empty()) reason = "not found";
         if (index < 0) {
             missing.push_back({ref.file, ref.loc, tried, reason});
-            const bool as_checker = options.missing == MissingTexturePolicy::Checker;
+            const bool as_checker =
+                options.missing == MissingTexturePolicy::Checker || options.checker_names.count(ref.file) > 0;
             diagnostics.push_back({as_checker ? Severity::Warning : Severity::Error, ref.loc,
                                    "texture '" + ref.file + "': " + reason +
                                        (as_checker ? " (drawn as a checkerboard)" : "") + tried_list(tried)});

@@ -2,6 +2,7 @@
 // Finds and decodes the textures a flattened scene's materials name (scene-format.md §8),
 // one decode per file however many objects use it.
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct TextureOptions {
     std::vector<std::string> search_dirs;  // user-given, tried after the built-in places
     // Answers for textures that were missing before: name as written in the scene → file.
     std::map<std::string, std::string> overrides;
+    // Names drawn as checkerboards if they are missing, whatever `missing` says (the viewer's
+    // user declined to look for them; others are still errors).
+    std::set<std::string> checker_names;
     MissingTexturePolicy missing = MissingTexturePolicy::Error;
 };
 

@@ -311,6 +311,24 @@ TEST_F(TextureLoader, TruncatedFilesAreReportedNotDrawnBlack) {
     }
 }
 
+TEST_F(TextureLoader, DeclinedNamesAreCheckeredAndTheOthersStillErrors) {
+    // The viewer's user pressed Cancel for gone.png: it is a checkerboard from then on, while a
+    // texture missing for the first time still stops the load (so that it can be asked about).
+    TextureOptions options;
+    options.checker_names = {"gone.png"};
+    auto r = load_names({"gone.png", "new.png"}, scene_, options);
+    ASSERT_EQ(r->missing.size(), 2u);  // both still reported as data
+    ASSERT_EQ(r->diagnostics.size(), 2u) << r->messages();
+    EXPECT_EQ(r->diagnostics[0].severity, Severity::Warning);
+    EXPECT_NE(r->diagnostics[0].message.find("'gone.png': not found (drawn as a checkerboard)"), std::string::npos)
+        << r->diagnostics[0].message;
+    EXPECT_EQ(r->diagnostics[1].severity, Severity::Error);
+    EXPECT_NE(r->diagnostics[1].message.find("'new.png'"), std::string::npos) << r->diagnostics[1].message;
+    options.checker_names.insert("new.png");
+    r = load_names({"gone.png", "new.png"}, scene_, options);
+    EXPECT_FALSE(has_errors(r->diagnostics)) << r->messages();
+}
+
 TEST_F(TextureLoader, CheckerFallback) {
     TextureOptions options;
     options.missing = MissingTexturePolicy::Checker;
