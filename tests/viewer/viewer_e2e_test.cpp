@@ -3,6 +3,8 @@
 #ifdef WHITTED_VIEWER_PATH
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/socket.h>
+#include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -88,10 +90,42 @@ struct Child {
     }
 };
 
+// Whether an X server accepts connections on display `number`'s local socket.
+bool accepts_connections(const std::string& number) {
+    const std::string path = "/tmp/.X11-unix/X" + number;
+    sockaddr_un addr{};
+    addr.sun_family = AF_UNIX;
+    if (path.size() >= sizeof addr.sun_path) return false;
+    std::copy(path.begin(), path.end(), addr.sun_path);
+    const int fd = socket(AF_UNIX, SOCK_STREAM, 0);
+    if (fd < 0) return false;
+    const bool ok = connect(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) == 0;
+    close(fd);
+    return ok;
+}
+
 // An X server of our own on a free display number (Xvfb picks it: -displayfd).
 class Xvfb {
 public:
+    // Tries a few times: with tests running in parallel, a display number just given up by
+    // another test's server can be announced while its socket is being taken away (seen in CI:
+    // the viewer could not open the display it was given). A server that does not accept
+    // connections on its socket is replaced by a new one.
     bool start(const std::string& dir, std::string& why) {
+        for (int attempt = 0; attempt < 3; ++attempt) {
+            if (!start_once(dir, why)) return false;
+            for (auto deadline = std::chrono::steady_clock::now() + 2s; std::chrono::steady_clock::now() < deadline;
+                 std::this_thread::sleep_for(20ms))
+                if (accepts_connections(display_.substr(1))) return true;
+            server_.reset();
+        }
+        why = "Xvfb announced displays that accepted no connection, three times";
+        return false;
+    }
+    const std::string& display() const { return display_; }
+
+private:
+    bool start_once(const std::string& dir, std::string& why) {
         std::string xvfb = find_on_path("Xvfb");
         if (xvfb.empty()) {
             why = "Xvfb is not installed (Debian package xvfb; scripts/install-deps.sh --viewer-test installs it)";
@@ -128,9 +162,7 @@ public:
         display_ = ":" + number;
         return true;
     }
-    const std::string& display() const { return display_; }
 
-private:
     std::unique_ptr<Child> server_;
     std::string display_;
 };
