@@ -3,7 +3,9 @@
 // image cannot be written, out of memory), 130 interrupted.
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -39,6 +41,13 @@ bool same_file(const std::string& a, const std::string& b) {
     return std::filesystem::equivalent(a, b, ec) && !ec;
 }
 
+// CLI::Range lets NaN through (every comparison with it is false).
+const CLI::Validator finite_number(
+    [](std::string& s) {
+        return std::isfinite(std::strtof(s.c_str(), nullptr)) ? std::string() : "not a finite number: " + s;
+    },
+    "FINITE");
+
 // Warnings printed before the rest are only counted: a file with 100,000 stray brackets
 // should not bury its one real message.
 constexpr int kMaxWarningsShown = 50;
@@ -66,7 +75,8 @@ int run(int argc, char** argv) {
     app.add_option("--aa-threshold", aa_threshold,
                    "Adaptive anti-aliasing: supersample only pixels whose colour differs from a neighbour's by more "
                    "than this (0-1, per channel); 0 = every pixel")
-        ->check(CLI::Range(0.0f, 1.0f));
+        ->check(CLI::Range(0.0f, 1.0f))
+        ->check(finite_number);
     app.add_option("--mode", mode_name, "Render mode")->check(CLI::IsMember({"whitted", "raycast", "normals", "depth"}));
     app.add_option("--threads", threads, "Worker threads (0 = all hardware threads)")->check(CLI::Range(0, 1024));
     app.add_option("--texture-path", texture_dirs, "Extra directory to look for textures in (repeatable)")

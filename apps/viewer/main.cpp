@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -74,7 +75,10 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, kMaxAa));
     app.add_option("--aa-threshold", o.settings.aa_threshold,
                    "Adaptive anti-aliasing: only where a pixel differs from a neighbour by more (0-1); 0 = everywhere")
-        ->check(CLI::Range(0.0f, 1.0f));
+        ->check(CLI::Range(0.0f, 1.0f))
+        ->check(CLI::Validator(
+            [](std::string& s) { return std::isfinite(std::strtof(s.c_str(), nullptr)) ? "" : "not a finite number: " + s; },
+            "FINITE"));
     app.add_option("--mode", mode_name, "Render mode")->check(CLI::IsMember({"whitted", "raycast", "normals", "depth"}));
     app.add_option("--threads", o.settings.threads, "Worker threads (0 = all hardware threads)")
         ->check(CLI::Range(0, 1024));

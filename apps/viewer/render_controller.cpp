@@ -98,7 +98,7 @@ void RenderController::begin_locked(std::shared_ptr<Job> job, const std::string&
     job->settings.height = std::max(1, settings.height);
     job->settings.max_depth = std::max(0, settings.max_depth);
     job->settings.aa = std::clamp(settings.aa, 1, kMaxAa);
-    job->settings.aa_threshold = std::clamp(settings.aa_threshold, 0.0f, 1.0f);
+    job->settings.aa_threshold = settings.aa_threshold > 0.0f ? std::min(settings.aa_threshold, 1.0f) : 0.0f;  // NaN: 0
     job->settings.threads = std::max(0, settings.threads);
     job->settings.tile_size = std::max(1, settings.tile_size);
     current_ = job;

@@ -30,8 +30,8 @@ std::string unusable_transform(const glm::dmat4& world) {
         return "the transforms down to this object, composed, put it more than 1e30 from the origin, beyond what "
                "float arithmetic can trace: scale or move the scene toward the origin";
     if (is_singular(glm::mat4(world)))
-        return "the transforms down to this object, composed, are singular in float (their scales multiply down to "
-               "nothing): scale the scene up";
+        return "the transforms down to this object, composed, are singular or too close to it for float (scales "
+               "multiplied down to nothing, or axes squeezed together): scale the scene up, or undo the squeeze";
     return "";
 }
 

@@ -84,9 +84,17 @@ glm::vec3 WhittedIntegrator::debug_view(const Ray& ray, const Hit* hit) const {
 
 // What reaches `start` (just off the lit side of a surface) from `light`: 1 if nothing is in the
 // way, 0 behind anything opaque, the product of the transparent colours crossed otherwise.
+// Whether the shadow query may start at the light. A hit found along a ray is off by about 1e-7
+// of its distance from the ray's origin; from a light far away (relative to the scene around the
+// point) that error would swallow the offset that keeps the point's own surface out of the query,
+// so such lights are asked from the point. Decided the same way one ray at a time and in packets.
+bool WhittedIntegrator::query_from_light(const Light& light, const glm::vec3& start) {
+    return light.type != LightType::Directional && glm::length(light.position - start) * 1e-6f <= surface_offset(start);
+}
+
 glm::vec3 WhittedIntegrator::shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start) const {
     const FlatScene& flat = scene_.flat;
-    if (light.type != LightType::Directional) {
+    if (query_from_light(light, start)) {
         // From the light to the point (t in (0, 1)): the nearest thing on the way decides it,
         // unless it is glass, whose every crossing on the way counts.
         Hit h;
@@ -127,7 +135,9 @@ void WhittedIntegrator::camera_packet(const Ray (&rays)[kPacketSize], unsigned a
         Ray back[kPacketSize];
         unsigned want = 0;
         for (int l = 0; l < kPacketSize; ++l) {
-            if (!((found >> l) & 1) || !faces_light(points[l], sample_light(light, points[l].s.point))) continue;
+            if (!((found >> l) & 1) || !faces_light(points[l], sample_light(light, points[l].s.point)) ||
+                !query_from_light(light, points[l].above))
+                continue;  // not lit at all, or asked from the point (shadow_factor)
             back[l] = Ray{light.position, points[l].above - light.position};
             want |= 1u << l;
         }

@@ -65,6 +65,7 @@ private:
     };
     ShadingPoint shading_point(const Ray& ray, const Hit& hit) const;
     static bool faces_light(const ShadingPoint& p, const LightSample& ls);
+    static bool query_from_light(const Light& light, const glm::vec3& start);
     glm::vec3 shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight, RayCounts& counts,
                        const PacketShadows* shadows, int lane) const;
     glm::vec3 through_glass(const Light& light, const LightSample& ls, const glm::vec3& start) const;

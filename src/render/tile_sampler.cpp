@@ -30,6 +30,8 @@ TileSampler::TileSampler(const WhittedIntegrator& integrator, const Camera& came
                          int tile_size, const Sampling& sampling)
     : integrator_(integrator), camera_(camera), image_w_(image_w), image_h_(image_h), sampling_(sampling) {
     sampling_.aa = std::clamp(sampling_.aa, 1, kMaxAa);
+    // Decided once: a threshold that is not a positive number (0, negative, NaN) means every pixel.
+    if (!(sampling_.threshold > 0.0f)) sampling_.threshold = 0.0f;
     const bool adaptive = sampling_.aa > 1 && sampling_.threshold > 0.0f;
     const int apron = std::min(tile_size + 2, image_w);  // adaptive: the tile and a pixel around it
     band_w_ = adaptive ? apron : std::min(tile_size, image_w);

@@ -62,6 +62,7 @@ TEST(Cli, BadUsageExitsOne) {
     EXPECT_EQ(run_process({test::cli_path(), "--aa", "0"}).exit_code, 1);
     EXPECT_EQ(run_process({test::cli_path(), "--aa", "17"}).exit_code, 1);
     EXPECT_EQ(run_process({test::cli_path(), "--aa-threshold", "1.5"}).exit_code, 1);
+    EXPECT_EQ(run_process({test::cli_path(), "--aa-threshold", "nan"}).exit_code, 1);
     EXPECT_EQ(run_process({test::cli_path(), "x.sc", "-o", "out.gif"}).exit_code, 1);
     // A size the format cannot hold is refused before the render, not after it.
     auto huge = run_process({test::cli_path(), "-o", "/tmp/never.png", "--width", "32768", "--height", "32768"});

@@ -1,5 +1,6 @@
 // The image-space driver: pixel-centre rays, packets that change no pixel, thread independence,
 // cancellation.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <string>
@@ -335,6 +336,56 @@ TEST(Renderer, AdaptiveAntiAliasingIsEitherTheCentreRayOrTheFullGridPerPixel) {
     Image none(o.width, o.height);
     render(scene, o, none);
     EXPECT_EQ(none.rgb, plain.rgb);
+}
+
+TEST(Renderer, AThresholdThatIsNotAPositiveNumberMeansEveryPixel) {
+    // NaN slipped past the option checks once and sent the sampler down the adaptive path
+    // without its buffers.
+    Scene scene = busy_scene();
+    RenderOptions o;
+    o.width = 40;
+    o.height = 30;
+    o.aa = 2;
+    Image every(o.width, o.height), nan_threshold(o.width, o.height), negative(o.width, o.height);
+    render(scene, o, every);
+    o.aa_threshold = std::nanf("");
+    render(scene, o, nan_threshold);
+    o.aa_threshold = -1.0f;
+    render(scene, o, negative);
+    EXPECT_EQ(nan_threshold.rgb, every.rgb);
+    EXPECT_EQ(negative.rgb, every.rgb);
+}
+
+TEST(Renderer, AFarAwayPointLightCastsNoSpecklesOnWhatItLights) {
+    // Shapes alone under a point light 10,000 units away (a sun made of a point light), no
+    // ambient: nothing but a shape itself can shadow it, and only where it faces away from the
+    // light, where the light gives nothing anyway. So where a pixel is lit, its neighbours are
+    // lit or dark only as N·L falls off, never a black speck among bright pixels. A shadow query
+    // started at the light would find each point's own surface (a hit's float error is about
+    // 1e-7 of its distance from the ray's origin, here far more than the surface offset).
+    test::SceneBuilder b;
+    Material m;
+    m.diffuse = glm::vec3(1.0f);
+    b.add(ShapeKind::Sphere, test::translate_scale({-1.2f, 0, -5}, glm::vec3(2.0f)), m);
+    b.add(ShapeKind::Cylinder, test::translate_scale({1.3f, 0, -5}, glm::vec3(1.5f)), m);
+    b.add(ShapeKind::Cone, test::translate_scale({0, -1.5f, -7}, glm::vec3(1.5f)), m);
+    b.light(test::point_light({10000, 10000, 5000}, glm::vec3(1.0f)));
+    Scene scene = b.build();
+    RenderOptions o;
+    o.width = 160;
+    o.height = 120;
+    Image img(o.width, o.height);
+    render(scene, o, img);
+    int lit = 0, specks = 0;
+    for (int y = 1; y + 1 < o.height; ++y)
+        for (int x = 1; x + 1 < o.width; ++x) {
+            const int v = img.at(x, y).x;
+            lit += v > 0;
+            const int neighbours[] = {img.at(x - 1, y).x, img.at(x + 1, y).x, img.at(x, y - 1).x, img.at(x, y + 1).x};
+            specks += v == 0 && std::all_of(std::begin(neighbours), std::end(neighbours), [](int n) { return n > 40; });
+        }
+    EXPECT_GT(lit, 1000) << "the lit sides of the shapes";
+    EXPECT_EQ(specks, 0);
 }
 
 TEST(Renderer, ToByteRoundsAndClamps) {
