@@ -12,8 +12,11 @@ ProgressLine::ProgressLine(int total_tiles, bool enabled)
 void ProgressLine::tile_done() {
     int done = ++done_;
     if (!enabled_) return;
-    std::unique_lock lock(mutex_, std::try_to_lock);
-    if (!lock) return;  // another thread is drawing; never make a worker wait for the terminal
+    // Never make a worker wait for the terminal (another thread is drawing: skip this update),
+    // except for the last tile, whose line is always drawn.
+    std::unique_lock lock(mutex_, std::defer_lock);
+    if (done >= total_) lock.lock();
+    else if (!lock.try_lock()) return;
     auto now = Clock::now();
     if (now - last_draw_ < std::chrono::milliseconds(200) && done < total_) return;
     last_draw_ = now;
