@@ -435,6 +435,7 @@ void ViewerWindow::poll() {
 
     update_status(st);
     show_messages(st);
+    shown_ = st;
     // Every render that ends is reported, not only the first (e.g. after --watch reloads).
     if (!is_busy(st.state) && st.job != ended_job_) {
         ended_job_ = st.job;
@@ -686,7 +687,9 @@ ViewerWindow::Rect ViewerWindow::visible_image() const {
 // the area is where the image is shown (Fit window renders at its size); a tool's x and w include
 // its label; a field "needs" the width its text takes, and its label is as given to FLTK ("@@" for '@').
 void ViewerWindow::write_ready_file() {
-    const RenderStatus st = controller_.status();
+    // The status of the last poll, whose image, status bar and messages are what the window
+    // shows; the controller may have moved on since (a small render can end in between).
+    const RenderStatus& st = shown_;
     const Rect vis = visible_image();
     const std::string tmp = options_.ready_file + ".tmp";
     {

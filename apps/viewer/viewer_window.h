@@ -109,6 +109,7 @@ private:
     std::uint64_t shown_diagnostics_job_ = ~0ull, asked_textures_job_ = 0, first_job_ = 0, ended_job_ = 0;
     int area_w_ = 0, area_h_ = 0;  // the image area's size at the last layout
     std::vector<std::string> diagnostic_lines_, message_lines_;  // of the last load; in the panel now
+    RenderStatus shown_;  // the status the window was last brought up to date with (poll)
     bool done_handled_ = false;
     bool ready_written_ = false;
     bool quitting_ = false;
