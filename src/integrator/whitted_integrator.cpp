@@ -82,8 +82,6 @@ glm::vec3 WhittedIntegrator::debug_view(const Ray& ray, const Hit* hit) const {
     return glm::vec3(0.0f);
 }
 
-// What reaches `start` (just off the lit side of a surface) from `light`: 1 if nothing is in the
-// way, 0 behind anything opaque, the product of the transparent colours crossed otherwise.
 // Whether the shadow query may start at the light. A hit found along a ray is off by about 1e-7
 // of its distance from the ray's origin; from a light far away (relative to the scene around the
 // point) that error would swallow the offset that keeps the point's own surface out of the query,
@@ -92,6 +90,8 @@ bool WhittedIntegrator::query_from_light(const Light& light, const glm::vec3& st
     return light.type != LightType::Directional && glm::length(light.position - start) * 1e-6f <= surface_offset(start);
 }
 
+// What reaches `start` (just off the lit side of a surface) from `light`: 1 if nothing is in the
+// way, 0 behind anything opaque, the product of the transparent colours crossed otherwise.
 glm::vec3 WhittedIntegrator::shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start) const {
     const FlatScene& flat = scene_.flat;
     if (query_from_light(light, start)) {
