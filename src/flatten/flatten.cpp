@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include <string_view>
 #include <utility>
 #include <unordered_map>
 
@@ -66,19 +65,6 @@ Light to_light(const LightDesc& l) {
     return out;
 }
 
-// Name → index of every mastersubgraph, built once (a file may hold thousands, each referenced
-// many times).
-using SubgraphIndex = std::unordered_map<std::string_view, int>;
-SubgraphIndex index_subgraphs(const SceneDescription& d) {
-    SubgraphIndex index;
-    for (std::size_t i = 0; i < d.subgraphs.size(); ++i) index.emplace(d.subgraphs[i].name, int(i));
-    return index;
-}
-int find(const SubgraphIndex& index, const std::string& name) {
-    auto it = index.find(name);
-    return it == index.end() ? -1 : it->second;
-}
-
 // Number of instances each subgraph expands to, saturating instead of overflowing.
 class InstanceCounter {
 public:
@@ -116,7 +102,7 @@ private:
     void for_each_child(int s, F&& f) const {
         for (const TransDesc& t : desc_.subgraphs[s].children)
             for (const SubgraphRef& ref : t.subgraphs)
-                if (int child = find(index_, ref.name); child >= 0) f(child);
+                if (int child = find_subgraph(index_, ref.name); child >= 0) f(child);
     }
     static constexpr std::size_t kUnknown = std::numeric_limits<std::size_t>::max();
     static std::size_t add(std::size_t a, std::size_t b) { return a > kUnknown - 1 - b ? kUnknown - 1 : a + b; }
@@ -208,7 +194,7 @@ FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances) {
             for (const ObjectDesc& o : t.objects)
                 scene.instances.push_back(make_instance(world, o.kind, material_index(o)));
             for (const SubgraphRef& ref : t.subgraphs) {
-                if (int child = find(index, ref.name); child >= 0) stack.push_back({child, world});
+                if (int child = find_subgraph(index, ref.name); child >= 0) stack.push_back({child, world});
             }
         }
     }

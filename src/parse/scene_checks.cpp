@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <sstream>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -19,15 +18,6 @@ std::string vec_str(const glm::vec3& v) {
     return s.str();
 }
 
-// Name -> index, built once: SceneDescription::find_subgraph is a linear scan, and a file may
-// hold thousands of mastersubgraphs.
-std::unordered_map<std::string, int> index_by_name(const SceneDescription& scene) {
-    std::unordered_map<std::string, int> index;
-    for (size_t i = 0; i < scene.subgraphs.size(); ++i)
-        index.emplace(scene.subgraphs[i].name, static_cast<int>(i));
-    return index;
-}
-
 struct Edge {
     int target;
     const SubgraphRef* ref;
@@ -36,7 +26,7 @@ struct Edge {
 }  // namespace
 
 std::optional<Diagnostic> check_subgraph_references(const SceneDescription& scene) {
-    const auto index = index_by_name(scene);
+    const SubgraphIndex index = index_subgraphs(scene);
     for (const auto& sg : scene.subgraphs)
         for (const auto& trans : sg.children)
             for (const auto& ref : trans.subgraphs)
@@ -49,7 +39,7 @@ std::optional<Diagnostic> check_subgraph_references(const SceneDescription& scen
 
 std::optional<Diagnostic> check_subgraph_cycles(const SceneDescription& scene) {
     const int n = static_cast<int>(scene.subgraphs.size());
-    const auto index = index_by_name(scene);
+    const SubgraphIndex index = index_subgraphs(scene);
     std::vector<std::vector<Edge>> edges(n);
     for (int i = 0; i < n; ++i)
         for (const auto& trans : scene.subgraphs[i].children)

@@ -4,6 +4,8 @@
 // consumed by flatten/. Plain data, no behaviour.
 #include <optional>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -88,8 +90,15 @@ struct SceneDescription {
     std::vector<SubgraphDesc> subgraphs;
     int root = -1;  // index of `root` in subgraphs
 
-    // Index of the mastersubgraph with that name, or -1.
+    // Index of the mastersubgraph with that name, or -1 (a linear scan: see SubgraphIndex).
     int find_subgraph(const std::string& name) const;
 };
+
+// Name → index of every mastersubgraph, built once for code that looks many names up (a file may
+// hold thousands of mastersubgraphs, each referenced many times). Its keys point into `scene`.
+using SubgraphIndex = std::unordered_map<std::string_view, int>;
+SubgraphIndex index_subgraphs(const SceneDescription& scene);
+// The index of `name` in it, or -1.
+int find_subgraph(const SubgraphIndex& index, std::string_view name);
 
 }  // namespace whitted
