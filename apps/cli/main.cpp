@@ -96,12 +96,8 @@ int run(int argc, char** argv) {
     const bool is_showcase = scene_path.empty();
     if (is_showcase) scene_path = bundled_showcase();
     if (output.empty()) output = default_output(scene_path, is_showcase);
-    if (!is_supported_output(output)) {
-        std::cerr << "whitted: error: cannot write '" << output << "': use .png, .bmp, .ppm, .jpg or .jpeg\n";
-        return kExitUsage;
-    }
     if (std::string problem = output_problem(width, height, output); !problem.empty()) {
-        std::cerr << "whitted: error: " << problem << "\n";  // said before the render, not after
+        std::cerr << "whitted: error: " << problem << "\n";  // an unknown format or a size it cannot hold, before the render
         return kExitUsage;
     }
     if (same_file(output, scene_path)) {
