@@ -11,6 +11,7 @@
 #include "accel/bvh_packet.h"
 #include "accel/scene.h"
 #include "render/renderer.h"
+#include "render/tile_renderer.h"
 
 namespace whitted::bench {
 
@@ -83,7 +84,7 @@ inline std::vector<Ray> camera_rays(const Camera& cam, int width, int height, in
         for (int tx = 0; tx < width; tx += tile)
             for (int y = ty; y < std::min(ty + tile, height); ++y)
                 for (int x = tx; x < std::min(tx + tile, width); ++x)
-                    rays.push_back(camera_ray(cam, width, height, x + 0.5f, y + 0.5f));
+                    rays.push_back(cam.generate_ray(width, height, x + 0.5f, y + 0.5f, glm::vec2(0.5f)));
     return rays;
 }
 
@@ -105,7 +106,7 @@ inline std::vector<CameraPacket> camera_packets(const Camera& cam, int width, in
                     for (int l = 0; l < kPacketSize; ++l) {
                         const int x = bx + l % kPacketWidth, y = by + l / kPacketWidth;
                         if (x >= x1 || y >= y1) continue;
-                        p.rays[l] = camera_ray(cam, width, height, x + 0.5f, y + 0.5f);
+                        p.rays[l] = cam.generate_ray(width, height, x + 0.5f, y + 0.5f, glm::vec2(0.5f));
                         p.active |= 1u << l;
                     }
                     packets.push_back(p);

@@ -5,7 +5,7 @@
 //   spheres1k: 1,000 randomly rotated, non-uniformly scaled spheres, 640×480 camera rays in the
 //              renderer's 32×32-tile order; shadow rays from every primary hit toward the light.
 //   grid1m:    1000×1000 grid of mixed shapes (cube, cylinder, cone, sphere), same camera size.
-// whitted: intersect_nearest, transmittance, and intersect_nearest_packet where the checkout has it.
+// whitted: intersect_nearest, glass_transmittance (the any-hit query with the glass filter), and intersect_nearest_packet where the checkout has it.
 // Embree gets the same instances (after whitted's BVH reordering, so Embree's instance or primitive
 // i is whitted's instance i), default build quality and flags, in three encodings:
 //   embree_point: two-level; the unit sphere as RTC_GEOMETRY_TYPE_SPHERE_POINT (centre 0, radius
@@ -42,6 +42,7 @@
 
 #include "accel/instance_geometry.h"
 #include "bench_scenes.h"
+#include "integrator/glass_transmittance.h"
 #if __has_include("accel/bvh_packet.h")
 #include "accel/bvh_packet.h"  // whitted's own packet traversal, where this checkout has it
 #endif
@@ -565,7 +566,7 @@ std::uint64_t shadow_whitted(const Scene& s, const Ray* rays, const float* reach
     std::uint64_t n = 0;
     for (std::size_t i = b; i < e; ++i) {
         const bool blocked =
-            transmittance(s.bvh, s.flat.instances, s.flat.materials, rays[i], 0.0f, reach[i]).x == 0.0f;
+            glass_transmittance(s, rays[i], reach[i]).x == 0.0f;
         n += blocked;
         if (out) out[i] = blocked;
     }

@@ -12,6 +12,7 @@
 #include "accel/instance_geometry.h"
 #include "bench_scenes.h"
 #include "film/image.h"
+#include "integrator/glass_transmittance.h"
 #include "render/renderer.h"
 
 namespace whitted::bench {
@@ -131,8 +132,7 @@ void shadow(benchmark::State& state, Fixture& f) {
         parallel_for(f.shadow.size(), threads, [=](std::size_t b, std::size_t e) {
             std::uint64_t n = 0;
             for (std::size_t i = b; i < e; ++i)
-                n += transmittance(scene->bvh, scene->flat.instances, scene->flat.materials, rays[i], 0.0f, reach[i]).x ==
-                     0.0f;
+                n += glass_transmittance(*scene, rays[i], reach[i]).x == 0.0f;
             *total += n;
         });
     }
@@ -175,7 +175,7 @@ void BM_Render1080p(benchmark::State& state) {
         flat.lights.push_back(Light{LightType::Point, {-30, 20, 30}, {0, -1, 0}, glm::vec3(0.5f)});
         return accelerate(std::move(flat));
     }();
-    RenderOptions o;
+    RenderJob o;
     o.width = 1920;
     o.height = 1080;
     o.threads = int(state.range(0));

@@ -60,7 +60,7 @@ int run(int argc, char** argv) {
     app.footer("Exit codes: 0 done, 1 bad usage, 2 bad scene (FILE:LINE:COL: error: ...), 3 I/O failure, "
                "130 interrupted (the part rendered so far is written).");
     std::string scene_path, output, mode_name = "whitted", missing = "error";
-    int width = 640, height = 480, max_depth = 5, aa = 1, threads = 0;
+    int width = 640, height = 480, max_depth = 5, aa = 1, spp = 1, threads = 0;
     float aa_threshold = 0.0f;
     bool lenient = false, quiet = false, stats = false;
     std::vector<std::string> texture_dirs;
@@ -71,7 +71,11 @@ int run(int argc, char** argv) {
     app.add_option("--max-depth", max_depth, "Recursion limit for reflection/refraction (camera ray = 0)")
         ->check(CLI::Range(0, 1000));
     app.add_option("--aa", aa, "Anti-aliasing: N x N rays per pixel, averaged (1 = one ray through the centre)")
-        ->check(CLI::Range(1, kMaxAa));
+        ->check(CLI::Range(1, Sampler::kMaxAa));
+    app.add_option("--spp", spp,
+                   "Samples per pixel (per sub-pixel with --aa N: N x N x spp in all) for soft shadows, depth of "
+                   "field and gloss; 1 = the pixel, lens and light centres")
+        ->check(CLI::Range(1, Sampler::kMaxSpp));
     app.add_option("--aa-threshold", aa_threshold,
                    "Adaptive anti-aliasing: supersample only pixels whose colour differs from a neighbour's by more "
                    "than this (0-1, per channel); 0 = every pixel")
@@ -93,6 +97,11 @@ int run(int argc, char** argv) {
         return code == 0 ? 0 : kExitUsage;
     }
 
+    if (aa_threshold > 0.0f && spp > 1) {
+        std::cerr << "whitted: error: --aa-threshold compares the colours of pixel centres, which --spp > 1 does not "
+                     "take; use --aa-threshold with --spp 1, or --spp alone\n";
+        return kExitUsage;
+    }
     const bool is_showcase = scene_path.empty();
     if (is_showcase) scene_path = bundled_showcase();
     if (output.empty()) output = default_output(scene_path, is_showcase);
@@ -129,21 +138,18 @@ int run(int argc, char** argv) {
         return loaded.unreadable ? kExitIo : kExitScene;
     }
 
-    RenderOptions options;
-    options.width = width;
-    options.height = height;
-    options.max_depth = max_depth;
-    options.aa = aa;
-    options.aa_threshold = aa_threshold;
-    options.mode = *parse_render_mode(mode_name);
-    options.threads = threads;
-    options.cancel = &cli::interrupt_flag();
-    const int ts = options.tile_size;
-    cli::ProgressLine progress(((width + ts - 1) / ts) * ((height + ts - 1) / ts), !quiet && isatty(STDERR_FILENO));
-    options.on_tile = [&](const Tile&) { progress.tile_done(); };
+    RenderJob job;
+    job.width = width;
+    job.height = height;
+    job.integrator = {*parse_render_mode(mode_name), max_depth};
+    job.sampling = {aa, spp, aa_threshold};
+    job.threads = threads;
+    job.cancel = &cli::interrupt_flag();
+    cli::ProgressLine progress(job.tile_count(), !quiet && isatty(STDERR_FILENO));
+    job.on_tile = [&](const Tile&) { progress.tile_done(); };
 
     Image image(width, height);
-    RenderStats rs = render(*loaded.scene, options, image);
+    RenderStats rs = render(*loaded.scene, job, image);
     progress.finish();
 
     if (std::string err = write_image(image, output); !err.empty()) {

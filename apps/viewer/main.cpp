@@ -69,11 +69,11 @@ int main(int argc, char** argv) {
     app.add_option("--width", o.settings.width, "Image width in pixels")->check(CLI::Range(1, 32768));
     app.add_option("--height", o.settings.height, "Image height in pixels")->check(CLI::Range(1, 32768));
     app.add_flag("--fit", o.fit_window, "Render at the size of the image area");
-    app.add_option("--max-depth", o.settings.max_depth, "Recursion limit for reflection/refraction")
+    app.add_option("--max-depth", o.settings.integrator.max_depth, "Recursion limit for reflection/refraction")
         ->check(CLI::Range(0, 1000));
-    app.add_option("--aa", o.settings.aa, "Anti-aliasing: N x N rays per pixel, averaged")
-        ->check(CLI::Range(1, kMaxAa));
-    app.add_option("--aa-threshold", o.settings.aa_threshold,
+    app.add_option("--aa", o.settings.sampling.aa, "Anti-aliasing: N x N rays per pixel, averaged")
+        ->check(CLI::Range(1, Sampler::kMaxAa));
+    app.add_option("--aa-threshold", o.settings.sampling.aa_threshold,
                    "Adaptive anti-aliasing: only where a pixel differs from a neighbour by more (0-1); 0 = everywhere")
         ->check(CLI::Range(0.0f, 1.0f))
         ->check(CLI::Validator(
@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     if (!o.screenshot.empty()) o.exit_when_done = true;
-    o.settings.mode = *parse_render_mode(mode_name);
+    o.settings.integrator.mode = *parse_render_mode(mode_name);
     o.checker_textures = missing == "checker";
 
     install_signal_thread();

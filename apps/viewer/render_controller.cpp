@@ -63,7 +63,7 @@ struct RenderController::Job {
     LoadOptions load;
     bool force_reload = false;
     std::shared_ptr<const Scene> scene;
-    RenderSettings settings;
+    RenderJob settings;
     std::atomic<bool> cancel{false};
     std::atomic<bool> finished{false};
     std::thread thread;
@@ -90,15 +90,19 @@ void RenderController::cancel_current_locked() {
     }
 }
 
-void RenderController::begin_locked(std::shared_ptr<Job> job, const std::string& path, const RenderSettings& settings) {
+void RenderController::begin_locked(std::shared_ptr<Job> job, const std::string& path, const RenderJob& settings) {
     cancel_current_locked();
     job->id = ++next_job_;
     job->settings = settings;
     job->settings.width = std::max(1, settings.width);
     job->settings.height = std::max(1, settings.height);
-    job->settings.max_depth = std::max(0, settings.max_depth);
-    job->settings.aa = std::clamp(settings.aa, 1, kMaxAa);
-    job->settings.aa_threshold = settings.aa_threshold > 0.0f ? std::min(settings.aa_threshold, 1.0f) : 0.0f;  // NaN: 0
+    job->settings.integrator.max_depth = std::max(0, settings.integrator.max_depth);
+    job->settings.sampling.aa = std::clamp(settings.sampling.aa, 1, Sampler::kMaxAa);
+    job->settings.sampling.spp = std::clamp(settings.sampling.spp, 1, Sampler::kMaxSpp);
+    job->settings.sampling.aa_threshold =
+        settings.sampling.aa_threshold > 0.0f ? std::min(settings.sampling.aa_threshold, 1.0f) : 0.0f;  // NaN: 0
+    job->settings.cancel = nullptr;  // the controller's own, per job
+    job->settings.on_tile = nullptr;
     job->settings.threads = std::max(0, settings.threads);
     job->settings.tile_size = std::max(1, settings.tile_size);
     current_ = job;
@@ -111,7 +115,7 @@ void RenderController::begin_locked(std::shared_ptr<Job> job, const std::string&
     changed_.notify_all();
 }
 
-void RenderController::start(const std::string& scene_path, const LoadOptions& load, const RenderSettings& settings,
+void RenderController::start(const std::string& scene_path, const LoadOptions& load, const RenderJob& settings,
                              bool force_reload) {
     reap();
     auto job = std::make_shared<Job>();
@@ -123,7 +127,7 @@ void RenderController::start(const std::string& scene_path, const LoadOptions& l
     launch(job);
 }
 
-void RenderController::start(std::shared_ptr<const Scene> scene, const RenderSettings& settings) {
+void RenderController::start(std::shared_ptr<const Scene> scene, const RenderJob& settings) {
     reap();
     auto job = std::make_shared<Job>();
     job->scene = std::move(scene);
@@ -190,49 +194,58 @@ void RenderController::run(std::shared_ptr<Job> job) {
         scene = loaded.scene;
     }
 
-    // 2. The render, into a private image; finished tiles are copied to the shared one.
-    const RenderSettings& s = job->settings;
-    Image work(s.width, s.height);
+    // 2. The render, pass after pass into one film; finished tiles are copied to the shared image.
+    const RenderJob& s = job->settings;
+    const std::vector<int> passes = sample_passes(s.sampling);
     {
         std::lock_guard lock(mutex_);
         if (!is_current()) return finish();
-        const int ts = s.tile_size;
         status_.state = RenderState::Rendering;
-        status_.tiles_total = ((s.width + ts - 1) / ts) * ((s.height + ts - 1) / ts);
+        status_.tiles_total = s.tile_count() * int(passes.size());
+        status_.samples_total = passes.back();
+        status_.passes_total = int(passes.size());
         image_ = Image(s.width, s.height);
         ++image_version_;
         changed_.notify_all();
     }
-    RenderOptions options;
-    options.width = s.width;
-    options.height = s.height;
-    options.max_depth = s.max_depth;
-    options.aa = s.aa;
-    options.aa_threshold = s.aa_threshold;
-    options.mode = s.mode;
-    options.threads = s.threads;
-    options.tile_size = s.tile_size;
-    options.cancel = &job->cancel;
-    options.on_tile = [&](const Tile& t) {
-        // Runs on the render thread that wrote the tile, so reading `work` here is race-free.
+    Film film(s.width, s.height);
+    const auto integrator = make_integrator(*scene, s.camera_for(*scene), s.integrator);
+    RenderJob pass = s;
+    pass.cancel = &job->cancel;
+    pass.on_tile = [&](const Tile& t) {
+        // Runs on the render thread that finished the tile, so reading its film pixels is race-free.
         std::lock_guard lock(mutex_);
         if (!is_current()) return;
-        const std::size_t row_bytes = std::size_t(t.x1 - t.x0) * 3;
-        for (int y = t.y0; y < t.y1; ++y) {
-            const std::size_t at = (std::size_t(y) * s.width + t.x0) * 3;
-            std::memcpy(&image_.rgb[at], &work.rgb[at], row_bytes);
-        }
+        film.write_to(image_, t);
         ++status_.tiles_done;
         ++image_version_;
     };
-    RenderStats stats = render(*scene, options, work);
+    bool cancelled = false;
+    for (std::size_t i = 0; i < passes.size() && !cancelled; ++i) {
+        pass.sample_begin = i == 0 ? 0 : passes[i - 1];
+        pass.sample_end = passes[i];
+        cancelled = render(*integrator, pass, film).cancelled;
+        std::lock_guard lock(mutex_);
+        if (!cancelled && is_current()) {
+            status_.samples_done = passes[i];
+            status_.passes_done = int(i) + 1;
+        }
+    }
 
     std::lock_guard lock(mutex_);
     if (is_current()) {
-        status_.state = stats.cancelled ? RenderState::Stopped : RenderState::Finished;
+        status_.state = cancelled ? RenderState::Stopped : RenderState::Finished;
         status_.elapsed_seconds = seconds_since(started_);
     }
     finish();
+}
+
+std::vector<int> sample_passes(const SamplingSettings& sampling) {
+    const int n = sampling.samples_per_pixel();
+    if (sampling.adaptive()) return {n};
+    std::vector<int> ends{std::min(n, Sampler(sampling.aa, 1).samples_per_pixel())};
+    while (ends.back() < n) ends.push_back(std::min(n, 2 * ends.back()));
+    return ends;
 }
 
 RenderStatus RenderController::status() const {

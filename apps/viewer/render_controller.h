@@ -15,7 +15,7 @@
 #include "film/image.h"
 #include "integrator/render_mode.h"
 #include "render/load_scene.h"
-#include "render/renderer.h"  // kMaxAa
+#include "render/renderer.h"
 
 namespace whitted::viewer {
 
@@ -33,22 +33,19 @@ const char* state_name(RenderState state);
 // True while a job is loading or rendering.
 inline bool is_busy(RenderState s) { return s == RenderState::Loading || s == RenderState::Rendering; }
 
-struct RenderSettings {
-    int width = 640, height = 480;
-    int max_depth = 5;
-    RenderMode mode = RenderMode::Whitted;
-    int aa = 1;       // anti-aliasing: aa × aa rays per pixel
-    float aa_threshold = 0.0f;  // > 0: adaptive (see Sampling)
-    int threads = 0;  // 0 = all hardware threads
-    int tile_size = 32;
-};
+// The passes in which a job's samples arrive, so the whole image shows early and then refines:
+// one sample per sub-pixel cell first (aa × aa per pixel), then each pass doubles the samples done.
+// Adaptive anti-aliasing is one pass. Returns the sample index each pass ends at.
+std::vector<int> sample_passes(const SamplingSettings& sampling);
 
 struct RenderStatus {
     RenderState state = RenderState::Idle;
     std::uint64_t job = 0;        // increases with every start()
     std::string scene_path;       // as given to start()
-    RenderSettings settings;      // of the current job
-    int tiles_done = 0, tiles_total = 0;
+    RenderJob settings;           // of the current job (the size, integrator and sampling; no callbacks)
+    int tiles_done = 0, tiles_total = 0;  // over all passes
+    int samples_done = 0, samples_total = 0;  // per pixel: of the passes finished, of the job
+    int passes_done = 0, passes_total = 0;
     double elapsed_seconds = 0;   // since start(), frozen when the job ends
     std::vector<Diagnostic> diagnostics;       // of the last load (warnings too)
     std::vector<MissingTexture> missing_textures;
@@ -68,10 +65,10 @@ public:
     // Returns at once; a job still running is cancelled first (without waiting for it).
     // If the file, its modification time and the load options are those of the last successful
     // load, that scene is rendered again without loading (pass force_reload to load anyway).
-    void start(const std::string& scene_path, const LoadOptions& load, const RenderSettings& settings,
+    void start(const std::string& scene_path, const LoadOptions& load, const RenderJob& settings,
                bool force_reload = false);
     // Renders a scene that is already loaded (no file involved).
-    void start(std::shared_ptr<const Scene> scene, const RenderSettings& settings);
+    void start(std::shared_ptr<const Scene> scene, const RenderJob& settings);
 
     // Asks the current job to stop and returns at once. The state becomes Stopped immediately;
     // the image keeps the tiles finished so far. The job's threads end within a tile row.
@@ -97,7 +94,7 @@ private:
     void launch(std::shared_ptr<Job> job);
     void run(std::shared_ptr<Job> job);
     void cancel_current_locked();
-    void begin_locked(std::shared_ptr<Job> job, const std::string& path, const RenderSettings& settings);
+    void begin_locked(std::shared_ptr<Job> job, const std::string& path, const RenderJob& settings);
 
     mutable std::mutex mutex_;
     mutable std::condition_variable changed_;

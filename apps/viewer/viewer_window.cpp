@@ -200,14 +200,14 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     }, this);
     fit_->do_callback();
     tool(fit_, "fit", 10);
-    depth_ = spinner("depth", "Depth", 8, 52, 0, 1000, options.settings.max_depth,
+    depth_ = spinner("depth", "Depth", 8, 52, 0, 1000, options.settings.integrator.max_depth,
                      "Recursion limit for reflection and refraction (the camera ray is depth 0)");
     mode_ = new Fl_Choice(0, 0, 90, h, "Mode");
     for (const char* m : kModes) mode_->add(m);
-    mode_->value(int(options.settings.mode));
+    mode_->value(int(options.settings.integrator.mode));
     mode_->tooltip("whitted: full lighting; raycast: unlit colour; normals, depth: debugging views");
     tool(mode_, "mode", 10);
-    aa_ = spinner("aa", "AA", 10, 44, 1, kMaxAa, options.settings.aa,
+    aa_ = spinner("aa", "AA", 10, 44, 1, Sampler::kMaxAa, options.settings.sampling.aa,
                   "Anti-aliasing: N x N rays per pixel, averaged (1 = one ray through the pixel centre)");
     const int hw = int(std::max(1u, std::thread::hardware_concurrency()));
     threads_ = spinner("threads", "Threads", 10, 52, 1, 1024,
@@ -334,7 +334,7 @@ LoadOptions ViewerWindow::load_options() const {
     return o;
 }
 
-void ViewerWindow::read_controls(RenderSettings& s, bool& fit) {
+void ViewerWindow::read_controls(RenderJob& s, bool& fit) {
     fit = fit_->value();
     if (fit) {
         s.width = std::max(1, scroll_->w());
@@ -345,9 +345,9 @@ void ViewerWindow::read_controls(RenderSettings& s, bool& fit) {
         s.width = int(width_->value());
         s.height = int(height_->value());
     }
-    s.max_depth = int(depth_->value());
-    s.mode = RenderMode(std::max(0, mode_->value()));
-    s.aa = int(aa_->value());
+    s.integrator.max_depth = int(depth_->value());
+    s.integrator.mode = RenderMode(std::max(0, mode_->value()));
+    s.sampling.aa = int(aa_->value());
     s.threads = int(threads_->value());
 }
 
@@ -363,7 +363,7 @@ void ViewerWindow::render(bool force_reload) {
         set_message("open a scene first (File > Open)");
         return;
     }
-    RenderSettings s = options_.settings;
+    RenderJob s = options_.settings;
     bool fit = false;
     read_controls(s, fit);
     extra_message_.clear();

@@ -25,7 +25,7 @@ class ImageView;
 
 struct ViewerOptions {
     std::string scene;                       // "" = start empty
-    RenderSettings settings;
+    RenderJob settings;
     bool fit_window = false;                 // image size follows the image area
     bool watch = false;                      // reload when the scene file changes on disk
     bool lenient = false;
@@ -65,7 +65,7 @@ private:
     void layout();
     void layout_toolbar();
     void layout_status();
-    void read_controls(RenderSettings& settings, bool& fit);
+    void read_controls(RenderJob& settings, bool& fit);
     void update_status(const RenderStatus& st);
     void show_messages(const RenderStatus& st);
     void ask_for_textures(const RenderStatus& st);

@@ -55,14 +55,4 @@ bool intersect_nearest(const Bvh& bvh, const std::vector<Instance>& instances, c
 bool intersect_nearest_brute_force(const std::vector<Instance>& instances, const Ray& ray, float t_min, float t_max,
                                    Hit& hit);
 
-// Fraction of light that passes along the segment (t_min, t_max) of the ray: 0 once an opaque
-// instance is crossed, else the product of `transparent` over every surface crossing
-// (a closed glass object is crossed twice). Spec §7, shadow factor S.
-glm::vec3 transmittance(const Bvh& bvh, const std::vector<Instance>& instances, const std::vector<Material>& materials,
-                        const Ray& ray, float t_min, float t_max);
-
-// The same, testing every instance (the reference for the tests).
-glm::vec3 transmittance_brute_force(const std::vector<Instance>& instances, const std::vector<Material>& materials,
-                                    const Ray& ray, float t_min, float t_max);
-
 }  // namespace whitted

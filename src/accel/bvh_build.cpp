@@ -5,15 +5,14 @@
 // children), and the instances are reordered to leaf order.
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
-#include <thread>
 
 #include "accel/bvh.h"
 #include "accel/instance_geometry.h"
+#include "util/parallel_for.h"
 
 namespace whitted {
 namespace {
@@ -102,10 +101,7 @@ Bounds padded_world_bounds(const Instance& inst) {
 }
 
 // The threads a build uses: as asked (0 = all hardware threads), at most 8.
-int build_threads(int asked) {
-    const int all = int(std::max(1u, std::thread::hardware_concurrency()));
-    return std::clamp(asked > 0 ? asked : all, 1, 8);
-}
+int build_threads(int asked) { return std::min(worker_count(asked, 8), 8); }
 
 // Runs body(begin, end) over [0, n) in chunks, on all build threads when n is large.
 template <class Body>
@@ -115,14 +111,9 @@ void parallel_chunks(std::size_t n, int threads, Body body) {
         return;
     }
     constexpr std::size_t kChunk = 16384;
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-        for (std::size_t b; (b = next.fetch_add(kChunk)) < n;) body(std::uint32_t(b), std::uint32_t(std::min(n, b + kChunk)));
-    };
-    std::vector<std::thread> pool;
-    for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+    parallel_for((n + kChunk - 1) / kChunk, threads, [&](std::size_t c, int) {
+        body(std::uint32_t(c * kChunk), std::uint32_t(std::min(n, (c + 1) * kChunk)));
+    });
 }
 
 // Builds the subtree of `root` (whose node nodes[root.node] exists) into `nodes`. Tasks of at most
@@ -251,21 +242,14 @@ std::vector<BinNode> build_binary(std::vector<PrimRef>& refs, int threads) {
     std::vector<Task> deferred;
     build_subtree(refs, root, nodes, n / 16, &deferred);
     std::vector<std::vector<BinNode>> parts(deferred.size());
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-        for (std::size_t i; (i = next.fetch_add(1)) < deferred.size();) {
-            std::vector<BinNode>& part = parts[i];
-            part.reserve(2 * std::size_t(deferred[i].end - deferred[i].begin));
-            part.emplace_back();
-            Task t = deferred[i];
-            t.node = 0;
-            build_subtree(refs, t, part, 0, nullptr);
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+    parallel_for(deferred.size(), threads, [&](std::size_t i, int) {
+        std::vector<BinNode>& part = parts[i];
+        part.reserve(2 * std::size_t(deferred[i].end - deferred[i].begin));
+        part.emplace_back();
+        Task t = deferred[i];
+        t.node = 0;
+        build_subtree(refs, t, part, 0, nullptr);
+    });
     // Part node 0 is the deferred task's own node; part node k > 0 goes to base + k - 1.
     for (std::size_t i = 0; i < parts.size(); ++i) {
         const std::vector<BinNode>& part = parts[i];

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "camera/camera.h"
 #include "scene/scene_description.h"
 
 namespace whitted {
@@ -24,6 +25,7 @@ struct Material {
     glm::vec3 reflect{0.0f}, transparent{0.0f}, emit{0.0f};
     float shine = 1.0f;
     float ior = 1.0f;
+    float gloss = 0.0f;  // > 0: reflect and transparent rays drawn from a cos^gloss lobe (§9.1)
     int texture = -1;  // index into FlatScene::textures, -1 = none
     float repeat_u = 1.0f, repeat_v = 1.0f;
     bool is_transparent() const { return transparent != glm::vec3(0.0f); }
@@ -37,12 +39,8 @@ struct Light {
     glm::vec3 falloff{1, 0, 0};
     float cos_aperture = -1.0f;  // spot: cos of the half-angle
     float exponent = 1.0f;
-};
-
-struct Camera {
-    glm::vec3 eye{0, 0, 1};
-    glm::vec3 forward{0, 0, -1}, right{1, 0, 0}, up{0, 1, 0};  // orthonormal
-    float tan_half_fov = 0.57735f;  // vertical
+    float radius = 0.0f;   // point/spot: a disc facing the shaded point (§9.1)
+    float cos_half_angle = 1.0f;  // directional: its directions fill this cone (§9.1)
 };
 
 // A texture image as linear RGB floats, row 0 at the top.
@@ -56,7 +54,7 @@ struct FlatScene {
     std::vector<Material> materials;
     std::vector<Light> lights;
     std::vector<TextureImage> textures;
-    Camera camera;
+    Camera camera;  // the file's camera: what a render uses unless it is given another
     glm::vec3 background{0.0f};
     glm::vec3 ambient_intensity{1.0f};
 };

@@ -44,6 +44,7 @@ Material to_material(const MaterialDesc& m) {
     out.emit = m.emit;
     out.shine = m.shine;
     out.ior = m.ior;
+    out.gloss = m.gloss;
     if (m.texture) {
         out.repeat_u = m.texture->repeat_u;
         out.repeat_v = m.texture->repeat_v;
@@ -62,6 +63,8 @@ Light to_light(const LightDesc& l) {
     out.cos_aperture = std::cos(glm::radians(l.aperture_deg));
     if (l.aperture_deg >= 180.0f) out.cos_aperture = -1.0f;
     out.exponent = l.exponent;
+    out.radius = l.radius;
+    out.cos_half_angle = std::cos(glm::radians(l.angle_deg) * 0.5f);
     return out;
 }
 
@@ -131,6 +134,11 @@ Camera make_camera(const CameraDesc& desc) {
     cam.right = glm::normalize(glm::cross(cam.forward, desc.up));
     cam.up = glm::cross(cam.right, cam.forward);
     cam.tan_half_fov = std::tan(glm::radians(desc.angle_deg) * 0.5f);
+    cam.lens_radius = 0.5f * desc.aperture;
+    // The parser made sure a lens has something to focus on (§9.1).
+    cam.focal_distance = desc.focal_distance > 0.0f ? desc.focal_distance
+                         : desc.use_focus        ? glm::length(desc.focus - desc.eye)
+                                                 : 1.0f;
     return cam;
 }
 

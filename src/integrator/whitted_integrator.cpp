@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "integrator/light_sample.h"
-#include "integrator/surface.h"
+#include "integrator/glass_transmittance.h"
+#include "sampler/warp.h"
 
 namespace whitted {
 namespace {
@@ -25,143 +25,105 @@ bool refract(const glm::vec3& d, const glm::vec3& n, float eta, glm::vec3& out) 
     return true;
 }
 
-// The range every nearest-hit query searches, one ray at a time or a packet at a time: anything
-// in front of the ray's origin.
-constexpr float kHitMin = 0.0f, kHitMax = kInfinity;
-
-bool nearest_hit(const Scene& scene, const Ray& ray, Hit& hit) {
-    return intersect_nearest(scene.bvh, scene.flat.instances, ray, kHitMin, kHitMax, hit);
-}
-
 }  // namespace
 
-WhittedIntegrator::WhittedIntegrator(const Scene& scene, const IntegratorOptions& options)
-    : scene_(scene), options_(options) {
-    if (options_.mode == RenderMode::Depth && !scene.bvh.nodes.empty()) {
-        // Shade the scene's own distance range from the eye: near = white, far = black.
-        Bounds b = scene.bvh.bounds();
-        glm::vec3 eye = scene.flat.camera.eye;
-        glm::vec3 nearest = glm::clamp(eye, b.lo, b.hi);
-        depth_near_ = glm::length(nearest - eye);
-        float far = 0;
-        for (int i = 0; i < 8; ++i) {
-            glm::vec3 c((i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z);
-            far = std::max(far, glm::length(c - eye));
-        }
-        depth_far_ = std::max(far, depth_near_ + 1e-6f);
-    }
-}
+WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Camera& camera, int max_depth)
+    : Integrator(scene, camera), max_depth_(max_depth) {}
 
-glm::vec3 WhittedIntegrator::camera_ray(const Ray& ray, RayCounts& counts) const {
-    Hit hit;
-    return camera_ray(ray, nearest_hit(scene_, ray, hit) ? &hit : nullptr, counts);
-}
-
-unsigned WhittedIntegrator::camera_hits(const Ray (&rays)[kPacketSize], unsigned active, Hit (&hits)[kPacketSize]) const {
-    return intersect_nearest_packet(scene_.bvh, scene_.flat.instances, rays, active, kHitMin, kHitMax, hits);
-}
-
-glm::vec3 WhittedIntegrator::camera_ray(const Ray& ray, const Hit* first_hit, RayCounts& counts) const {
+glm::vec3 WhittedIntegrator::radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler,
+                                      RayCounts& counts) const {
     ++counts.camera;
-    if (options_.mode != RenderMode::Whitted) return debug_view(ray, first_hit);
-    return shade(ray, first_hit, 0, glm::vec3(1.0f), counts);
-}
-
-glm::vec3 WhittedIntegrator::debug_view(const Ray& ray, const Hit* hit) const {
-    if (!hit) return options_.mode == RenderMode::Raycast ? scene_.flat.background : glm::vec3(0.0f);
-    Surface s = surface_at(scene_, ray, *hit);
-    switch (options_.mode) {
-        case RenderMode::Raycast: return s.diffuse;
-        case RenderMode::Normals: return 0.5f * (s.normal + 1.0f);
-        case RenderMode::Depth: {
-            float d = hit->t * glm::length(ray.direction);
-            return glm::vec3(1.0f - std::clamp((d - depth_near_) / (depth_far_ - depth_near_), 0.0f, 1.0f));
-        }
-        case RenderMode::Whitted: break;
-    }
-    return glm::vec3(0.0f);
+    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts);
 }
 
 // Whether the shadow query may start at the light. A hit found along a ray is off by about 1e-7
 // of its distance from the ray's origin; from a light far away (relative to the scene around the
 // point) that error would swallow the offset that keeps the point's own surface out of the query,
 // so such lights are asked from the point. Decided the same way one ray at a time and in packets.
-bool WhittedIntegrator::query_from_light(const Light& light, const glm::vec3& start) {
-    return light.type != LightType::Directional && glm::length(light.position - start) * 1e-6f <= surface_offset(start);
+bool WhittedIntegrator::query_from_light(const Light& light, const LightSample& ls, const glm::vec3& start) {
+    return light.type != LightType::Directional && glm::length(ls.position - start) * 1e-6f <= surface_offset(start);
 }
 
-// What reaches `start` (just off the lit side of a surface) from `light`: 1 if nothing is in the
-// way, 0 behind anything opaque, the product of the transparent colours crossed otherwise.
+// The light's sample for a point shaded at `depth`: its centre, or with an extent (§9.1) the point
+// of it this sample draws.
+LightSample WhittedIntegrator::light_sample(std::size_t li, const glm::vec3& point, int depth,
+                                            const SampleContext& ctx) const {
+    const Light& light = scene_.flat.lights[li];
+    if (!has_extent(light) || ctx.sampler.centred()) return sample_light(light, point);
+    return sample_light(light, point, ctx.get2d(dimension::light(depth, std::uint32_t(li))));
+}
+
+// What reaches `start` (just off the lit side of a surface) from the light sample: 1 if nothing
+// is in the way, 0 behind anything opaque, the product of the transparent colours crossed otherwise.
 glm::vec3 WhittedIntegrator::shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start) const {
-    const FlatScene& flat = scene_.flat;
-    if (query_from_light(light, start)) {
+    if (query_from_light(light, ls, start)) {
         // From the light to the point (t in (0, 1)): the nearest thing on the way decides it,
         // unless it is glass, whose every crossing on the way counts.
         Hit h;
-        if (!intersect_nearest(scene_.bvh, flat.instances, Ray{light.position, start - light.position}, 0.0f, 1.0f, h))
-            return glm::vec3(1.0f);
-        if (!flat.materials[flat.instances[h.instance].material].is_transparent()) return glm::vec3(0.0f);
+        if (!scene_.intersect(Ray{ls.position, start - ls.position}, h, 1.0f)) return glm::vec3(1.0f);
+        if (!scene_.material(h).is_transparent()) return glm::vec3(0.0f);
     }
-    return through_glass(light, ls, start);
+    return through_glass(ls, start);
 }
 
 // The full query from the point toward the light: every transparent surface crossed tints it.
-glm::vec3 WhittedIntegrator::through_glass(const Light& light, const LightSample& ls, const glm::vec3& start) const {
-    const FlatScene& flat = scene_.flat;
-    const float reach = std::isinf(ls.distance) ? kInfinity : glm::length(light.position - start);
-    return transmittance(scene_.bvh, flat.instances, flat.materials, Ray{start, ls.to_light}, 0.0f, reach);
+glm::vec3 WhittedIntegrator::through_glass(const LightSample& ls, const glm::vec3& start) const {
+    const float reach = std::isinf(ls.distance) ? kInfinity : glm::length(ls.position - start);
+    return glass_transmittance(scene_, Ray{start, ls.to_light}, reach);
 }
 
-void WhittedIntegrator::camera_packet(const Ray (&rays)[kPacketSize], unsigned active, const Hit (&hits)[kPacketSize],
-                                      unsigned found, glm::vec3 (&colors)[kPacketSize], RayCounts& counts) const {
-    if (options_.mode != RenderMode::Whitted) {
-        for (int l = 0; l < kPacketSize; ++l)
-            if ((active >> l) & 1) colors[l] = camera_ray(rays[l], (found >> l) & 1 ? &hits[l] : nullptr, counts);
-        return;
-    }
+void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sampler, glm::vec3 (&out)[kPacketSize],
+                                 RayCounts& counts) const {
     const FlatScene& flat = scene_.flat;
-    found &= active;
+    const unsigned active = batch.active;
+    Hit hits[kPacketSize];
+    const unsigned found = scene_.intersect(batch.rays, active, hits) & active;
     ShadingPoint points[kPacketSize];
     for (int l = 0; l < kPacketSize; ++l)
-        if ((found >> l) & 1) points[l] = shading_point(rays[l], hits[l]);
+        if ((found >> l) & 1) points[l] = shading_point(batch.rays[l], hits[l]);
     // The shadow rays toward each point or spot light, traced together from the light: they share
     // their origin and fan out over neighbouring points, as coherent as the camera rays were.
-    // Exactly shadow_factor's first query, so the colours are those of camera_ray one by one.
+    // Exactly shadow_factor's first query, so the colours are those of one ray at a time. Lights
+    // with a size are sampled per sample (no shared origin) and asked one by one.
     PacketShadows shadows;
     const std::size_t packet_lights = std::min(flat.lights.size(), std::size_t(kPacketLights));
     for (std::size_t li = 0; li < packet_lights; ++li) {
         const Light& light = flat.lights[li];
-        if (light.type == LightType::Directional) continue;
+        if (light.type == LightType::Directional || has_extent(light)) continue;
         Ray back[kPacketSize];
         unsigned want = 0;
         for (int l = 0; l < kPacketSize; ++l) {
-            if (!((found >> l) & 1) || !faces_light(points[l], sample_light(light, points[l].s.point)) ||
-                !query_from_light(light, points[l].above))
+            if (!((found >> l) & 1)) continue;
+            const LightSample ls = sample_light(light, points[l].s.point);
+            if (!faces_light(points[l], ls) || !query_from_light(light, ls, points[l].above))
                 continue;  // not lit at all, or asked from the point (shadow_factor)
             back[l] = Ray{light.position, points[l].above - light.position};
             want |= 1u << l;
         }
         if (!want) continue;
         Hit blockers[kPacketSize];
-        const unsigned blocked = intersect_nearest_packet(scene_.bvh, flat.instances, back, want, 0.0f, 1.0f, blockers);
+        const unsigned blocked = scene_.intersect(back, want, blockers, 1.0f);
         for (int l = 0; l < kPacketSize; ++l) {
             if (!((want >> l) & 1)) continue;
-            shadows.query[li][l] = !((blocked >> l) & 1) ? ShadowQuery::Lit
-                                   : flat.materials[flat.instances[blockers[l].instance].material].is_transparent()
-                                       ? ShadowQuery::Glass
-                                       : ShadowQuery::Blocked;
+            shadows.query[li][l] = !((blocked >> l) & 1)                         ? ShadowQuery::Lit
+                                   : scene_.material(blockers[l]).is_transparent() ? ShadowQuery::Glass
+                                                                                  : ShadowQuery::Blocked;
         }
     }
     for (int l = 0; l < kPacketSize; ++l) {
         if (!((active >> l) & 1)) continue;
         ++counts.camera;
-        colors[l] = (found >> l) & 1 ? shade_at(points[l], 0, glm::vec3(1.0f), counts, &shadows, l) : flat.background;
+        out[l] = (found >> l) & 1
+                     ? shade_at(points[l], 0, glm::vec3(1.0f), SampleContext{sampler, batch.keys[l]}, counts, &shadows, l)
+                     : flat.background;
     }
 }
 
-glm::vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const glm::vec3& weight, RayCounts& counts) const {
+glm::vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx,
+                                   RayCounts& counts) const {
     Hit hit;
-    return shade(ray, nearest_hit(scene_, ray, hit) ? &hit : nullptr, depth, weight, counts);
+    if (!scene_.intersect(ray, hit)) return scene_.flat.background;
+    return shade_at(shading_point(ray, hit), depth, weight, ctx, counts, nullptr, 0);
 }
 
 WhittedIntegrator::ShadingPoint WhittedIntegrator::shading_point(const Ray& ray, const Hit& hit) const {
@@ -181,15 +143,20 @@ bool WhittedIntegrator::faces_light(const ShadingPoint& p, const LightSample& ls
     return glm::dot(p.n, ls.to_light) > 0.0f && max_component(ls.intensity) > 0.0f;
 }
 
-// The colour along `ray` given its nearest hit (nullptr: none), at recursion depth `depth`.
-glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit* nearest, int depth, const glm::vec3& weight,
-                                   RayCounts& counts) const {
-    if (!nearest) return scene_.flat.background;
-    return shade_at(shading_point(ray, *nearest), depth, weight, counts, nullptr, 0);
+bool WhittedIntegrator::secondary_direction(const glm::vec3& ideal, const glm::vec3& n, bool above, float gloss,
+                                            std::uint32_t dim, const SampleContext& ctx, glm::vec3& out) const {
+    if (!(gloss > 0.0f) || ctx.sampler.centred()) {
+        out = ideal;
+        return true;
+    }
+    out = cosine_power_lobe(ideal, gloss, ctx.get2d(dim));
+    const float side = glm::dot(out, n);
+    return above ? side > 0.0f : side < 0.0f;
 }
 
-glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight, RayCounts& counts,
-                                      const PacketShadows* shadows, int lane) const {
+glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight,
+                                      const SampleContext& ctx, RayCounts& counts, const PacketShadows* shadows,
+                                      int lane) const {
     const FlatScene& flat = scene_.flat;
     const Surface& s = p.s;
     const Material& m = *s.material;
@@ -200,7 +167,7 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
 
     for (std::size_t li = 0; li < flat.lights.size(); ++li) {
         const Light& light = flat.lights[li];
-        LightSample ls = sample_light(light, s.point);
+        const LightSample ls = light_sample(li, s.point, depth, ctx);
         if (!faces_light(p, ls)) continue;
         const float n_dot_l = glm::dot(n, ls.to_light);
         ++counts.shadow;
@@ -210,7 +177,7 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
         const ShadowQuery known = shadows && li < kPacketLights ? shadows->query[li][lane] : ShadowQuery::Unknown;
         const glm::vec3 shadow = known == ShadowQuery::Lit                  ? glm::vec3(1.0f)
                                  : known == ShadowQuery::Blocked            ? glm::vec3(0.0f)
-                                 : known == ShadowQuery::Glass || depth > 0 ? through_glass(light, ls, above)
+                                 : known == ShadowQuery::Glass || depth > 0 ? through_glass(ls, above)
                                                                             : shadow_factor(light, ls, above);
         if (max_component(shadow) <= 0.0f) continue;
         glm::vec3 r = 2.0f * n_dot_l * n - ls.to_light;
@@ -219,7 +186,7 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
         color += shadow * ls.intensity * (s.diffuse * n_dot_l + m.specular * spec);
     }
 
-    if (depth >= options_.max_depth) return color;
+    if (depth >= max_depth_) return color;
 
     glm::vec3 reflect_weight = m.reflect;
     if (m.is_transparent()) {
@@ -228,9 +195,11 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
         glm::vec3 refracted;
         if (refract(dir, n, eta, refracted)) {
             glm::vec3 w = weight * m.transparent;
-            if (max_component(w) >= kMinWeight) {
+            glm::vec3 d;
+            if (max_component(w) >= kMinWeight &&
+                secondary_direction(refracted, n, false, m.gloss, dimension::gloss_refract(depth), ctx, d)) {
                 ++counts.refracted;
-                color += m.transparent * trace(Ray{below, refracted}, depth + 1, w, counts);
+                color += m.transparent * trace(Ray{below, d}, depth + 1, w, ctx, counts);
             }
         } else {
             reflect_weight += m.transparent;  // total internal reflection: one mirror ray carries both
@@ -238,10 +207,12 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
     }
     if (max_component(reflect_weight) > 0.0f) {
         glm::vec3 w = weight * reflect_weight;
-        if (max_component(w) >= kMinWeight) {
+        glm::vec3 d;
+        if (max_component(w) >= kMinWeight &&
+            secondary_direction(dir - 2.0f * glm::dot(dir, n) * n, n, true, m.gloss, dimension::gloss_reflect(depth),
+                                ctx, d)) {
             ++counts.reflected;
-            glm::vec3 mirrored = dir - 2.0f * glm::dot(dir, n) * n;
-            color += reflect_weight * trace(Ray{above, mirrored}, depth + 1, w, counts);
+            color += reflect_weight * trace(Ray{above, d}, depth + 1, w, ctx, counts);
         }
     }
     return color;

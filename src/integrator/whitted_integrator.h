@@ -1,53 +1,29 @@
 #pragma once
 // Recursive Whitted ray tracing (scene-format.md §7): Phong direct lighting with shadow rays,
-// mirror reflection and Snell refraction up to a user-set depth.
+// mirror reflection and Snell refraction up to a user-set depth; with the distribution effects
+// of §9.1 (disc and cone lights, glossy reflect and transparent rays) drawn from the sampler.
 #include <cstdint>
 
 #include <glm/glm.hpp>
 
-#include "accel/bvh_packet.h"
-#include "accel/scene.h"
-#include "integrator/surface.h"
+#include "integrator/integrator.h"
 #include "integrator/light_sample.h"
-#include "integrator/render_mode.h"
+#include "integrator/surface.h"
 
 namespace whitted {
 
-// Rays traced, by kind; each render thread keeps its own and they are summed at the end.
-struct RayCounts {
-    std::uint64_t camera = 0, reflected = 0, refracted = 0, shadow = 0;
-    std::uint64_t total() const { return camera + reflected + refracted + shadow; }
-    RayCounts& operator+=(const RayCounts& o) {
-        camera += o.camera; reflected += o.reflected; refracted += o.refracted; shadow += o.shadow;
-        return *this;
-    }
-};
-
-struct IntegratorOptions {
-    int max_depth = 5;  // camera ray = depth 0; no ray deeper than this is traced
-    RenderMode mode = RenderMode::Whitted;
-};
-
-class WhittedIntegrator {
+class WhittedIntegrator final : public Integrator {
 public:
-    WhittedIntegrator(const Scene& scene, const IntegratorOptions& options);
+    WhittedIntegrator(const Scene& scene, const Camera& camera, int max_depth);
 
-    // Colour seen along a camera ray (linear, unclamped).
-    glm::vec3 camera_ray(const Ray& ray, RayCounts& counts) const;
+    // The camera rays' nearest hits are found a packet at a time, and the shadow rays toward
+    // point and spot lights from those hits are traced as packets too; every colour is exactly
+    // the one radiance(ray, key, …) gives one ray at a time.
+    void radiance(const CameraBatch& batch, const Sampler& sampler, glm::vec3 (&out)[kPacketSize],
+                  RayCounts& counts) const override;
 
-    // The same for a camera ray whose nearest hit was found beforehand by camera_hits
-    // (nullptr = it hit nothing): the renderer finds a tile's camera hits a packet at a time.
-    glm::vec3 camera_ray(const Ray& ray, const Hit* first_hit, RayCounts& counts) const;
-
-    // The nearest hits of a packet of camera rays (the lanes set in `active`), exactly as
-    // camera_ray(ray, counts) would find them one by one; bit l of the result = lane l hit.
-    unsigned camera_hits(const Ray (&rays)[kPacketSize], unsigned active, Hit (&hits)[kPacketSize]) const;
-
-    // The colours of a packet of camera rays whose hits camera_hits found (`found`), exactly as
-    // camera_ray(ray, hit, counts) gives them one by one; the shadow rays toward point and spot
-    // lights from the packet's hits are traced as packets too.
-    void camera_packet(const Ray (&rays)[kPacketSize], unsigned active, const Hit (&hits)[kPacketSize], unsigned found,
-                       glm::vec3 (&colors)[kPacketSize], RayCounts& counts) const;
+    // One camera ray on its own, as sample `key`.
+    glm::vec3 radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler, RayCounts& counts) const;
 
 private:
     // A hit made ready for shading: its surface, the normal facing the viewer, the points just
@@ -57,6 +33,12 @@ private:
         glm::vec3 dir, n, above, below;
         bool outside;
     };
+    // Which sample is being shaded: where its further random numbers come from.
+    struct SampleContext {
+        const Sampler& sampler;
+        SampleKey key;
+        glm::vec2 get2d(std::uint32_t dim) const { return sampler.get2d(key, dim); }
+    };
     // What a packet's shadow rays found for each lane and light (the first kPacketLights lights).
     enum class ShadowQuery : unsigned char { Unknown, Lit, Blocked, Glass };
     static constexpr std::size_t kPacketLights = 8;
@@ -65,18 +47,20 @@ private:
     };
     ShadingPoint shading_point(const Ray& ray, const Hit& hit) const;
     static bool faces_light(const ShadingPoint& p, const LightSample& ls);
-    static bool query_from_light(const Light& light, const glm::vec3& start);
-    glm::vec3 shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight, RayCounts& counts,
-                       const PacketShadows* shadows, int lane) const;
-    glm::vec3 through_glass(const Light& light, const LightSample& ls, const glm::vec3& start) const;
-    glm::vec3 trace(const Ray& ray, int depth, const glm::vec3& weight, RayCounts& counts) const;
-    glm::vec3 shade(const Ray& ray, const Hit* nearest, int depth, const glm::vec3& weight, RayCounts& counts) const;
-    glm::vec3 debug_view(const Ray& ray, const Hit* hit) const;
+    static bool query_from_light(const Light& light, const LightSample& ls, const glm::vec3& start);
+    LightSample light_sample(std::size_t li, const glm::vec3& point, int depth, const SampleContext& ctx) const;
+    glm::vec3 shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight, const SampleContext& ctx,
+                       RayCounts& counts, const PacketShadows* shadows, int lane) const;
+    glm::vec3 through_glass(const LightSample& ls, const glm::vec3& start) const;
     glm::vec3 shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start) const;
+    glm::vec3 trace(const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx,
+                    RayCounts& counts) const;
+    // The direction of a reflected or refracted ray: the ideal one, or with gloss one drawn from
+    // the lobe around it (false: it fell on the wrong side of the surface and carries nothing).
+    bool secondary_direction(const glm::vec3& ideal, const glm::vec3& n, bool above, float gloss,
+                             std::uint32_t dim, const SampleContext& ctx, glm::vec3& out) const;
 
-    const Scene& scene_;
-    IntegratorOptions options_;
-    float depth_near_ = 0, depth_far_ = 1;  // distance range for the depth view
+    int max_depth_;
 };
 
 // Distance by which secondary rays leave a surface, relative to the point's magnitude so that

@@ -26,14 +26,14 @@ struct ParseStop {};
 // The keywords each block accepts, for "expected one of" hints.
 constexpr const char* kTopKeywords = "background, camera, light, mastersubgraph";
 constexpr const char* kBackgroundKeywords = "color";
-constexpr const char* kCameraKeywords = "eye, look, focus, up, angle, near-far";
+constexpr const char* kCameraKeywords = "eye, look, focus, up, angle, near-far, aperture, focaldistance";
 constexpr const char* kLightKeywords =
-    "type, position, direction, color, function, aperture, exponent, ambient";
+    "type, position, direction, color, function, aperture, exponent, radius, angle, ambient";
 constexpr const char* kSubgraphKeywords = "trans";
 constexpr const char* kTransKeywords =
     "translate, scale, rotate, matrixRC, matrixCR, object, subgraph";
 constexpr const char* kObjectKeywords =
-    "ambient, diffuse, specular, reflect, transparent, emit, shine, ior, texture";
+    "ambient, diffuse, specular, reflect, transparent, emit, shine, ior, gloss, texture";
 constexpr const char* kShapeNames = "cube, cylinder, cone, sphere";
 
 // A token as it should appear in a message: quoted, printable, not absurdly long.
@@ -96,7 +96,7 @@ private:
     ParseOptions options_;
     std::vector<Diagnostic> diags_;
     SceneDescription scene_;
-    SourceLoc camera_up_loc_, camera_view_loc_;            // line 0 until written
+    SourceLoc camera_up_loc_, camera_view_loc_, camera_aperture_loc_;  // line 0 until written
     std::unordered_map<std::string, int> subgraph_index_;  // for duplicates, without O(n²)
 
     // ---- tokens and diagnostics -------------------------------------------------------------
@@ -318,6 +318,17 @@ private:
             } else if (w == "near-far") {
                 cam.near_plane = number(*k);
                 cam.far_plane = number(*k);
+            } else if (w == "aperture") {
+                const Token& v = peek();
+                cam.aperture = number(*k);
+                if (!(cam.aperture >= 0))
+                    fail(v, "camera 'aperture' (the lens diameter) must be >= 0; found " + num_str(cam.aperture));
+                camera_aperture_loc_ = loc(*k);
+            } else if (w == "focaldistance") {
+                const Token& v = peek();
+                cam.focal_distance = number(*k);
+                if (!(cam.focal_distance > 0))
+                    fail(v, "camera 'focaldistance' must be > 0; found " + num_str(cam.focal_distance));
             } else {
                 unknown_keyword(*k, "camera", kCameraKeywords);
             }
@@ -328,7 +339,7 @@ private:
         LightDesc light;
         light.loc = loc(opener);
         bool has_light_keyword = false, has_ambient = false;
-        SourceLoc direction_loc = light.loc, function_loc = light.loc;
+        SourceLoc direction_loc = light.loc, function_loc = light.loc, radius_loc, angle_loc;
         open_block();
         while (const Token* k = next_in_block(opener, "light")) {
             const std::string_view w = k->text;
@@ -367,6 +378,19 @@ private:
                 light.exponent = number(*k);
                 if (!(light.exponent >= 0))
                     fail(v, "light 'exponent' must be >= 0; found " + num_str(light.exponent));
+            } else if (w == "radius") {
+                const Token& v = peek();
+                light.radius = number(*k);
+                if (!(light.radius >= 0))
+                    fail(v, "light 'radius' (of the disc the light is) must be >= 0; found " + num_str(light.radius));
+                radius_loc = loc(*k);
+            } else if (w == "angle") {
+                const Token& v = peek();
+                light.angle_deg = number(*k);
+                if (!(light.angle_deg >= 0 && light.angle_deg < 180))
+                    fail(v, "light 'angle' (the angular diameter of a directional light) must be in [0, 180) "
+                            "degrees; found " + num_str(light.angle_deg));
+                angle_loc = loc(*k);
             } else if (w == "ambient") {
                 scene_.ambient_intensity = vec3(*k);  // global I_a, last one wins
                 has_ambient = true;
@@ -379,6 +403,12 @@ private:
         }
         if (has_ambient && !has_light_keyword) return;  // an `ambient`-only block is not a light
 
+        if (light.type == LightType::Directional && light.radius > 0)
+            fail(radius_loc, "light 'radius' makes a point light or spotlight a disc; a directional light's size "
+                             "is its 'angle' (angular diameter in degrees)");
+        if (light.type != LightType::Directional && light.angle_deg > 0)
+            fail(angle_loc, "light 'angle' (angular diameter) applies to directional lights; a point light or "
+                            "spotlight is made larger with 'radius'");
         if (light.type != LightType::Point && !(glm::length(glm::dvec3(light.direction)) > 1e-12))
             fail(direction_loc,
                  std::string("light 'direction' is zero: a ") +
@@ -514,6 +544,13 @@ private:
                 mat.emit = vec3(*k);
             else if (w == "shine")
                 mat.shine = number(*k);
+            else if (w == "gloss") {
+                const Token& v = peek();
+                mat.gloss = number(*k);
+                if (!(mat.gloss > 0))
+                    fail(v, "'gloss' (the exponent of the blur lobe; large = sharp) must be > 0; found " +
+                                num_str(mat.gloss));
+            }
             else if (w == "ior") {
                 const Token& v = peek();
                 mat.ior = number(*k);
@@ -557,6 +594,11 @@ private:
         }
         if (auto d = check_camera(scene_.camera, camera_up_loc_, camera_view_loc_))
             fail(d->loc, d->message);
+        const CameraDesc& cam = scene_.camera;
+        if (cam.aperture > 0 && !cam.use_focus && !(cam.focal_distance > 0))
+            fail(camera_aperture_loc_, "camera 'aperture' " + num_str(cam.aperture) +
+                                           " needs a distance to focus at: give 'focaldistance F', or a 'focus' "
+                                           "point (the camera looks along 'look', so there is none)");
     }
 };
 

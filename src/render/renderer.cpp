@@ -3,55 +3,57 @@
 #include <algorithm>
 #include <chrono>
 #include <mutex>
-#include <thread>
 #include <vector>
 
-namespace whitted {
+#include "render/tile_renderer.h"
+#include "util/parallel_for.h"
 
-RenderStats render(const Scene& scene, const RenderOptions& options, Image& image) {
+namespace whitted {
+namespace {
+
+std::vector<Tile> cut_into_tiles(const PixelRegion& r, int tile_size) {
+    const int ts = std::max(1, tile_size);
+    std::vector<Tile> tiles;
+    for (int y = r.y0; y < r.y1; y += ts)
+        for (int x = r.x0; x < r.x1; x += ts) tiles.push_back({x, y, std::min(x + ts, r.x1), std::min(y + ts, r.y1)});
+    return tiles;
+}
+
+}  // namespace
+
+int RenderJob::tile_count() const { return int(cut_into_tiles(render_region(), tile_size).size()); }
+
+RenderStats render(const Integrator& integrator, const RenderJob& job, Film& film) {
     const auto start = std::chrono::steady_clock::now();
     RenderStats stats;
-    const int w = image.width, h = image.height, ts = std::max(1, options.tile_size);
-    std::vector<Tile> tiles;
-    for (int y = 0; y < h; y += ts)
-        for (int x = 0; x < w; x += ts) tiles.push_back({x, y, std::min(x + ts, w), std::min(y + ts, h)});
+    const std::vector<Tile> tiles = cut_into_tiles(job.render_region(), job.tile_size);
     stats.tiles_total = int(tiles.size());
+    stats.threads = worker_count(job.threads, tiles.size());
 
-    const WhittedIntegrator shared_integrator(scene, {options.max_depth, options.mode});
-    // The counters every worker writes get cache lines of their own (no false sharing with what
-    // the workers read per pixel).
-    alignas(64) std::atomic<int> next{0};
+    // One renderer (scratch buffers, ray counts) per worker, each on cache lines of its own.
+    std::vector<TileRenderer> workers;
+    workers.reserve(std::size_t(stats.threads));
+    for (int w = 0; w < stats.threads; ++w) workers.emplace_back(integrator, job);
     alignas(64) std::atomic<int> done{0};
-    std::mutex stats_mutex;
-
-    auto worker = [&] {
-        // Per-thread copies of what is read per pixel, and the ray counts on their own line.
-        const WhittedIntegrator integrator = shared_integrator;
-        const Camera camera = scene.flat.camera;
-        alignas(64) RayCounts counts;
-        TileSampler sampler(integrator, camera, w, h, ts, {options.aa, options.aa_threshold});
-        for (int i; (i = next.fetch_add(1)) < int(tiles.size());) {
-            const Tile& t = tiles[i];
-            const bool complete = sampler.render(t, image, counts, options.cancel);
-            if (!complete) break;
-            ++done;
-            if (options.on_tile) options.on_tile(t);
-        }
-        std::lock_guard lock(stats_mutex);
-        stats.rays += counts;
-    };
-
-    int n = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-    n = std::min(n, std::max(1, int(tiles.size())));
-    stats.threads = n;
-    std::vector<std::thread> pool;
-    for (int i = 1; i < n; ++i) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+    parallel_for(tiles.size(), stats.threads, [&](std::size_t i, int w) {
+        if (job.cancel && job.cancel->load(std::memory_order_relaxed)) return;
+        if (!workers[std::size_t(w)].render(tiles[i], film)) return;
+        done.fetch_add(1, std::memory_order_relaxed);
+        if (job.on_tile) job.on_tile(tiles[i]);
+    });
+    for (const TileRenderer& w : workers) stats.rays += w.counts();
 
     stats.tiles_done = done.load();
     stats.cancelled = stats.tiles_done < stats.tiles_total;
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
+RenderStats render(const Scene& scene, const RenderJob& job, Image& image) {
+    const auto integrator = make_integrator(scene, job.camera_for(scene), job.integrator);
+    Film film(job.width, job.height);
+    RenderStats stats = render(*integrator, job, film);
+    film.write_to(image, job.render_region());
     return stats;
 }
 

@@ -28,6 +28,7 @@ struct MaterialDesc {
     glm::vec3 reflect{0.0f}, transparent{0.0f}, emit{0.0f};
     float shine = 1.0f;
     float ior = 1.0f;
+    float gloss = 0.0f;  // §9.1: cos^gloss lobe for reflect/transparent rays; 0 = ideal directions
     std::optional<TextureRef> texture;
 };
 
@@ -39,6 +40,8 @@ struct CameraDesc {
     glm::vec3 up{0, 1, 0};
     float angle_deg = 60;  // full vertical field of view
     float near_plane = 0.1f, far_plane = 1000.0f;  // kept, never clips rays
+    float aperture = 0.0f;        // §9.1: thin-lens diameter; 0 = pinhole
+    float focal_distance = 0.0f;  // §9.1: 0 = not given (then |focus - eye|)
     SourceLoc loc;  // of the last camera block (for messages)
 
     glm::vec3 view_direction() const { return use_focus ? focus - eye : look; }
@@ -54,6 +57,8 @@ struct LightDesc {
     glm::vec3 falloff{1, 0, 0};  // `function c l q`
     float aperture_deg = 180;
     float exponent = 1;
+    float radius = 0;     // §9.1: point/spot light as a disc of this radius
+    float angle_deg = 0;  // §9.1: angular diameter of a directional light
     SourceLoc loc;
 };
 

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "accel/bvh.h"
+#include "accel/bvh_any_hit.h"
 #include "accel/bvh_test_scenes.h"
 #include "accel/instance_geometry.h"
 
@@ -146,6 +147,35 @@ TEST(Bvh, FarAwayRaysMatchBruteForceAndHitTheSurface) {
         }
     }
     EXPECT_GT(hits, 1000);
+}
+
+// The coloured-glass shadow factor (as integrator/glass_transmittance.h filters the any-hit
+// query) over the BVH's crossings and over every instance's: the two must see the same crossings.
+struct GlassFilter {
+    const std::vector<Material>& materials;
+    const std::vector<Instance>& instances;
+    glm::vec3 through{1.0f};
+    bool operator()(std::uint32_t i, int crossings) {
+        const Material& m = materials[instances[i].material];
+        if (!m.is_transparent()) {
+            through = glm::vec3(0.0f);
+            return false;
+        }
+        through *= crossings == 2 ? m.transparent * m.transparent : m.transparent;
+        return true;
+    }
+};
+glm::vec3 transmittance(const Bvh& bvh, const std::vector<Instance>& instances, const std::vector<Material>& materials,
+                        const Ray& ray, float t_min, float t_max) {
+    GlassFilter f{materials, instances};
+    for_each_crossing(bvh, instances, ray, t_min, t_max, f);
+    return f.through;
+}
+glm::vec3 transmittance_brute_force(const std::vector<Instance>& instances, const std::vector<Material>& materials,
+                                    const Ray& ray, float t_min, float t_max) {
+    GlassFilter f{materials, instances};
+    for_each_crossing_brute_force(instances, ray, t_min, t_max, f);
+    return f.through;
 }
 
 TEST(Bvh, TransmittanceMatchesBruteForce) {

@@ -95,7 +95,7 @@ TEST(ParseMaterial, ObjectTypeErrors) {
 TEST(ParseMaterial, UnknownKeywordAndStrayNumber) {
     EXPECT_TRUE(error_at(object("cube [ diffuse 1 1 1 alpha 0.9 ]"), 2, 29,
                          "unknown keyword 'alpha' in object block (expected one of: ambient, "
-                         "diffuse, specular, reflect, transparent, emit, shine, ior, texture); use "
+                         "diffuse, specular, reflect, transparent, emit, shine, ior, gloss, texture); use "
                          "--lenient to skip unknown keywords"));
     EXPECT_TRUE(error_at(object("cube [ diffuse 1 1 1 1 ]"), 2, 29,
                          "unexpected number '1' in object block"));

@@ -84,10 +84,10 @@ void expect_matches_reference(const fs::path& scene, const std::string& name, in
 
         const LoadResult loaded = load_scene(scene.string());
         ASSERT_TRUE(loaded.ok()) << (loaded.diagnostics.empty() ? "" : loaded.diagnostics.back().str());
-        RenderOptions options;
+        RenderJob options;
         options.width = kWidth;
         options.height = kHeight;
-        options.aa = aa;
+        options.sampling.aa = aa;
         Image image(kWidth, kHeight);
         render(*loaded.scene, options, image);
 
@@ -120,11 +120,11 @@ TEST(SceneImages, TheComparisonCatchesAChangedPicture) {
     auto render_scene = [](const char* file, RenderMode mode, int max_depth) {
         const LoadResult loaded = load_scene((kScenes / "features" / file).string());
         EXPECT_TRUE(loaded.ok());
-        RenderOptions options;
+        RenderJob options;
         options.width = kWidth;
         options.height = kHeight;
-        options.mode = mode;
-        options.max_depth = max_depth;
+        options.integrator.mode = mode;
+        options.integrator.max_depth = max_depth;
         Image image(kWidth, kHeight);
         if (loaded.ok()) render(*loaded.scene, options, image);
         return image;

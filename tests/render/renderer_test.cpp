@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "render/load_scene.h"
+#include "integrator/whitted_integrator.h"
 #include "render/renderer.h"
 #include "support/scene_builder.h"
 
@@ -19,7 +20,7 @@ TEST(CameraRay, GoesThroughPixelCentresWithVerticalFov) {
     cam.tan_half_fov = 1.0f;  // 90° vertical
     // 4×2 image (aspect 2): pixel (0,0)'s centre is at x = 0.5/4·2−1 = −0.75 of the half width
     // (half width = aspect · tan = 2), y = 1 − 0.5 = 0.5 of the half height.
-    Ray r = camera_ray(cam, 4, 2, 0.5f, 0.5f);
+    Ray r = cam.generate_ray(4, 2, 0.5f, 0.5f, glm::vec2(0.5f));
     glm::vec3 want = glm::normalize(glm::vec3(-0.75f * 2.0f, 0.5f, -1.0f));
     EXPECT_NEAR(r.direction.x, want.x, 1e-6f);
     EXPECT_NEAR(r.direction.y, want.y, 1e-6f);
@@ -42,7 +43,7 @@ Scene busy_scene() {
 
 TEST(Renderer, ImageIsByteIdenticalForAnyThreadCount) {
     Scene scene = busy_scene();
-    RenderOptions o;
+    RenderJob o;
     o.width = 97;  // not a multiple of the tile size
     o.height = 61;
     o.tile_size = 16;
@@ -61,13 +62,27 @@ TEST(Renderer, ImageIsByteIdenticalForAnyThreadCount) {
 }
 
 // The image as it was made before camera rays were traced in packets: pixel by pixel, each
-// camera ray traced on its own (WhittedIntegrator::camera_ray(ray, counts) finds its hit itself).
-Image one_ray_at_a_time(const Scene& scene, const RenderOptions& o, RayCounts& counts) {
-    const WhittedIntegrator integrator(scene, {o.max_depth, o.mode});
+// camera ray traced on its own (WhittedIntegrator::radiance(ray, …) finds its hit itself).
+Image one_ray_at_a_time(const Scene& scene, const RenderJob& o, RayCounts& counts) {
+    const auto integrator = make_integrator(scene, scene.flat.camera, o.integrator);
+    const Sampler sampler;
     Image image(o.width, o.height);
     for (int y = 0; y < o.height; ++y)
         for (int x = 0; x < o.width; ++x) {
-            glm::vec3 c = integrator.camera_ray(camera_ray(scene.flat.camera, o.width, o.height, x + 0.5f, y + 0.5f), counts);
+            const Ray ray = scene.flat.camera.generate_ray(o.width, o.height, x + 0.5f, y + 0.5f, glm::vec2(0.5f));
+            const SampleKey key{std::uint32_t(x), std::uint32_t(y), 0};
+            glm::vec3 c;
+            if (o.integrator.mode == RenderMode::Whitted) {
+                c = static_cast<const WhittedIntegrator&>(*integrator).radiance(ray, key, sampler, counts);
+            } else {  // the debug views: a batch of one lane
+                CameraBatch one;
+                one.rays[0] = ray;
+                one.keys[0] = key;
+                one.active = 1;
+                glm::vec3 out[kPacketSize];
+                integrator->radiance(one, sampler, out, counts);
+                c = out[0];
+            }
             std::uint8_t* p = &image.rgb[(std::size_t(y) * o.width + x) * 3];
             p[0] = to_byte(c.x);
             p[1] = to_byte(c.y);
@@ -86,11 +101,11 @@ void expect_packets_change_nothing(const Scene& scene, const char* name) {
         for (const Size& size : sizes) {
             SCOPED_TRACE(std::string(name) + " " + render_mode_name(mode) + " " + std::to_string(size.w) + "x" +
                          std::to_string(size.h) + " tile " + std::to_string(size.tile));
-            RenderOptions o;
+            RenderJob o;
             o.width = size.w;
             o.height = size.h;
             o.tile_size = size.tile;
-            o.mode = mode;
+            o.integrator.mode = mode;
             o.threads = 2;
             RayCounts want_counts;
             const Image want = one_ray_at_a_time(scene, o, want_counts);
@@ -134,7 +149,7 @@ TEST(Renderer, CancelStopsAfterTheCurrentRowsAndLeavesTheRestBlack) {
     Scene scene = busy_scene();
     std::atomic<bool> cancel{false};
     std::atomic<int> tiles{0};
-    RenderOptions o;
+    RenderJob o;
     o.width = 256;
     o.height = 256;
     o.threads = 2;
@@ -159,7 +174,7 @@ TEST(Renderer, CancelReturnsPromptlyFromABigRender) {
     std::atomic<bool> cancel{false};
     std::atomic<int> tiles{0};
     std::chrono::steady_clock::time_point cancelled_at;
-    RenderOptions o;
+    RenderJob o;
     o.width = 4096;
     o.height = 4096;
     o.threads = 2;
@@ -182,7 +197,7 @@ TEST(Renderer, CancelReturnsPromptlyFromABigRender) {
 TEST(Renderer, CancelledBeforeTheStartRendersNothing) {
     Scene scene = busy_scene();
     std::atomic<bool> cancel{true};
-    RenderOptions o;
+    RenderJob o;
     o.width = 64;
     o.height = 64;
     o.cancel = &cancel;
@@ -208,12 +223,12 @@ Scene edge_scene(int width, int height, float edge_px, glm::vec3 glow, glm::vec3
 
 TEST(Renderer, AntiAliasingAveragesTheSubPixelsAPixelIsCutInto) {
     const glm::vec3 red(1, 0, 0), blue(0, 0, 1);
-    RenderOptions o;
+    RenderJob o;
     o.width = 9;
     o.height = 5;
     {
         // Edge through the middle of column 4: with 2×2 rays, two see the wall, two the background.
-        o.aa = 2;
+        o.sampling.aa = 2;
         Image img(o.width, o.height);
         RenderStats s = render(edge_scene(9, 5, 4.5f, red, blue), o, img);
         EXPECT_EQ(s.rays.camera, 9u * 5u * 4u);
@@ -226,7 +241,7 @@ TEST(Renderer, AntiAliasingAveragesTheSubPixelsAPixelIsCutInto) {
     {
         // Edge three quarters across column 4: sub-pixel centres at 4.125, 4.375, 4.625 (wall) and
         // 4.875 (background), so 3/4 red, 1/4 blue.
-        o.aa = 4;
+        o.sampling.aa = 4;
         Image img(o.width, o.height);
         RenderStats s = render(edge_scene(9, 5, 4.75f, red, blue), o, img);
         EXPECT_EQ(s.rays.camera, 9u * 5u * 16u);
@@ -237,7 +252,7 @@ TEST(Renderer, AntiAliasingAveragesTheSubPixelsAPixelIsCutInto) {
     {
         // aa = 1 is the single ray through the pixel centre: column 4's centre (4.5) is left of
         // an edge at 4.75.
-        o.aa = 1;
+        o.sampling.aa = 1;
         Image img(o.width, o.height);
         render(edge_scene(9, 5, 4.75f, red, blue), o, img);
         EXPECT_EQ(img.at(4, 2), glm::u8vec3(255, 0, 0));
@@ -247,10 +262,10 @@ TEST(Renderer, AntiAliasingAveragesTheSubPixelsAPixelIsCutInto) {
 TEST(Renderer, AntiAliasingClampsEachRayBeforeTheMean) {
     // A wall glowing 4× brighter than white beside black: the half-covered pixel shows half of
     // white (what each ray can show), not the clipped mean of 2.
-    RenderOptions o;
+    RenderJob o;
     o.width = 9;
     o.height = 5;
-    o.aa = 2;
+    o.sampling.aa = 2;
     Image img(o.width, o.height);
     render(edge_scene(9, 5, 4.5f, glm::vec3(4.0f), glm::vec3(0.0f)), o, img);
     EXPECT_EQ(img.at(4, 2), glm::u8vec3(128));
@@ -258,10 +273,10 @@ TEST(Renderer, AntiAliasingClampsEachRayBeforeTheMean) {
 
 TEST(Renderer, AntiAliasedImageIsByteIdenticalForAnyThreadCountAndTileSize) {
     Scene scene = busy_scene();
-    RenderOptions o;
+    RenderJob o;
     o.width = 97;
     o.height = 61;
-    o.aa = 3;  // 9 rays a pixel: packets of 16 straddle pixels
+    o.sampling.aa = 3;  // 9 rays a pixel: packets of 16 straddle pixels
     o.tile_size = 16;
     o.threads = 1;
     Image one(o.width, o.height), two(o.width, o.height), other_tiles(o.width, o.height), plain(o.width, o.height);
@@ -273,7 +288,7 @@ TEST(Renderer, AntiAliasedImageIsByteIdenticalForAnyThreadCountAndTileSize) {
     render(scene, o, other_tiles);
     EXPECT_EQ(one.rgb, two.rgb);
     EXPECT_EQ(one.rgb, other_tiles.rgb);
-    o.aa = 1;
+    o.sampling.aa = 1;
     render(scene, o, plain);
     EXPECT_NE(one.rgb, plain.rgb) << "anti-aliasing should change the edges of the shapes";
 }
@@ -283,11 +298,11 @@ TEST(Renderer, AdaptiveAntiAliasingSupersamplesOnlyWhereNeighboursDiffer) {
     // red wall, column 5's (5.5) the blue background, so exactly columns 4 and 5 differ from a
     // neighbour. They get 4 × 4 rays (column 4: 3/4 red; column 5: all blue); every other pixel
     // keeps its centre ray.
-    RenderOptions o;
+    RenderJob o;
     o.width = 9;
     o.height = 5;
-    o.aa = 4;
-    o.aa_threshold = 0.1f;
+    o.sampling.aa = 4;
+    o.sampling.aa_threshold = 0.1f;
     Image img(o.width, o.height);
     RenderStats s = render(edge_scene(9, 5, 4.75f, {1, 0, 0}, {0, 0, 1}), o, img);
     for (int y = 0; y < 5; ++y) {
@@ -301,16 +316,16 @@ TEST(Renderer, AdaptiveAntiAliasingSupersamplesOnlyWhereNeighboursDiffer) {
 
 TEST(Renderer, AdaptiveAntiAliasingIsEitherTheCentreRayOrTheFullGridPerPixel) {
     Scene scene = busy_scene();
-    RenderOptions o;
+    RenderJob o;
     o.width = 97;
     o.height = 61;
     o.tile_size = 16;
     o.threads = 2;
     Image plain(o.width, o.height), full(o.width, o.height), adaptive(o.width, o.height);
     render(scene, o, plain);
-    o.aa = 3;
+    o.sampling.aa = 3;
     render(scene, o, full);
-    o.aa_threshold = 0.05f;
+    o.sampling.aa_threshold = 0.05f;
     render(scene, o, adaptive);
     int centre_only = 0, supersampled = 0;
     for (int y = 0; y < o.height; ++y)
@@ -332,7 +347,7 @@ TEST(Renderer, AdaptiveAntiAliasingIsEitherTheCentreRayOrTheFullGridPerPixel) {
     EXPECT_EQ(one_thread.rgb, adaptive.rgb);
     EXPECT_EQ(other_tiles.rgb, adaptive.rgb);
     // A threshold no difference of clamped colours exceeds: the one-ray image, byte for byte.
-    o.aa_threshold = 1.0f;
+    o.sampling.aa_threshold = 1.0f;
     Image none(o.width, o.height);
     render(scene, o, none);
     EXPECT_EQ(none.rgb, plain.rgb);
@@ -342,15 +357,15 @@ TEST(Renderer, AThresholdThatIsNotAPositiveNumberMeansEveryPixel) {
     // NaN slipped past the option checks once and sent the sampler down the adaptive path
     // without its buffers.
     Scene scene = busy_scene();
-    RenderOptions o;
+    RenderJob o;
     o.width = 40;
     o.height = 30;
-    o.aa = 2;
+    o.sampling.aa = 2;
     Image every(o.width, o.height), nan_threshold(o.width, o.height), negative(o.width, o.height);
     render(scene, o, every);
-    o.aa_threshold = std::nanf("");
+    o.sampling.aa_threshold = std::nanf("");
     render(scene, o, nan_threshold);
-    o.aa_threshold = -1.0f;
+    o.sampling.aa_threshold = -1.0f;
     render(scene, o, negative);
     EXPECT_EQ(nan_threshold.rgb, every.rgb);
     EXPECT_EQ(negative.rgb, every.rgb);
@@ -371,7 +386,7 @@ TEST(Renderer, AFarAwayPointLightCastsNoSpecklesOnWhatItLights) {
     b.add(ShapeKind::Cone, test::translate_scale({0, -1.5f, -7}, glm::vec3(1.5f)), m);
     b.light(test::point_light({10000, 10000, 5000}, glm::vec3(1.0f)));
     Scene scene = b.build();
-    RenderOptions o;
+    RenderJob o;
     o.width = 160;
     o.height = 120;
     Image img(o.width, o.height);

@@ -305,10 +305,10 @@ inline Rendered render_scene_text(const std::string& text, const std::string& pa
     for (const auto& d : r.load.diagnostics) r.messages += d.str() + "\n";
     if (!r.load.ok()) return r;
     r.image = Image(w, h);
-    RenderOptions ro;
+    RenderJob ro;
     ro.width = w;
     ro.height = h;
-    ro.mode = mode;
+    ro.integrator.mode = mode;
     ro.threads = 2;
     render(*r.load.scene, ro, r.image);
     return r;

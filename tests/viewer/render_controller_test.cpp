@@ -37,11 +37,11 @@ std::shared_ptr<const Scene> busy_scene(int n = 60) {
 }
 
 // A render that takes many seconds on one thread: large, and deep mirrors everywhere.
-RenderSettings heavy_settings() {
-    RenderSettings s;
+RenderJob heavy_settings() {
+    RenderJob s;
     s.width = 1600;
     s.height = 1200;
-    s.max_depth = 40;
+    s.integrator.max_depth = 40;
     s.threads = 2;
     s.tile_size = 16;
     return s;
@@ -68,7 +68,7 @@ TEST(RenderController, StartsIdle) {
 
 TEST(RenderController, RendersProgressivelyToTheSameImageAsADirectRender) {
     auto scene = busy_scene();
-    RenderSettings s;
+    RenderJob s;
     s.width = 320;
     s.height = 240;
     s.tile_size = 16;
@@ -96,10 +96,10 @@ TEST(RenderController, RendersProgressivelyToTheSameImageAsADirectRender) {
     EXPECT_GT(st.elapsed_seconds, 0.0);
     EXPECT_GE(observations, 1);
 
-    RenderOptions o;
+    RenderJob o;
     o.width = s.width;
     o.height = s.height;
-    o.max_depth = s.max_depth;
+    o.integrator.max_depth = s.integrator.max_depth;
     o.threads = 1;
     Image direct(s.width, s.height);
     render(*scene, o, direct);
@@ -146,7 +146,7 @@ TEST(RenderController, StopWhenIdleOrFinishedChangesNothing) {
     RenderController c;
     c.stop();
     EXPECT_EQ(c.status().state, RenderState::Idle);
-    RenderSettings s;
+    RenderJob s;
     s.width = 32;
     s.height = 24;
     c.start(busy_scene(4), s);
@@ -162,12 +162,12 @@ TEST(RenderController, RestartWhileRunningCancelsThePreviousJob) {
     c.start(scene, heavy_settings());
     while (c.status().tiles_done < 1) std::this_thread::sleep_for(2ms);
 
-    RenderSettings small;
+    RenderJob small;
     small.width = 64;
     small.height = 48;
     small.threads = 2;
-    small.aa = 2;  // the settings of the new job, anti-aliasing included, reach its render
-    small.aa_threshold = 0.05f;
+    small.sampling.aa = 2;  // the settings of the new job, anti-aliasing included, reach its render
+    small.sampling.aa_threshold = 0.05f;
     const auto t0 = Clock::now();
     c.start(scene, small);
     EXPECT_LT(Clock::now() - t0, 50ms) << "start() must not wait for the previous render";
@@ -181,11 +181,11 @@ TEST(RenderController, RestartWhileRunningCancelsThePreviousJob) {
     EXPECT_EQ(img.width, 64);
     EXPECT_EQ(img.height, 48);
     // The late tiles of the first job never reach the second job's image.
-    RenderOptions o;
+    RenderJob o;
     o.width = 64;
     o.height = 48;
-    o.aa = 2;
-    o.aa_threshold = 0.05f;
+    o.sampling.aa = 2;
+    o.sampling.aa_threshold = 0.05f;
     Image direct(64, 48);
     render(*scene, o, direct);
     EXPECT_EQ(img.rgb, direct.rgb);
@@ -214,7 +214,7 @@ TEST(RenderController, LoadsASceneFileAndReportsItsCounts) {
     std::string dir = test::make_temp_dir();
     std::string path = test::write_file(dir, "ball.sc", kBallScene);
     RenderController c;
-    RenderSettings s;
+    RenderJob s;
     s.width = 40;
     s.height = 30;
     c.start(path, {}, s);
@@ -248,7 +248,7 @@ TEST(RenderController, ASceneWithErrorsEndsInTheFailedStateWithItsMessages) {
     std::string path = test::write_file(dir, "bad.sc", "camera [ eye 0 0 5 focus 0 0 0 ]\nlight [ position 1 2 ]\n"
                                                  "mastersubgraph root [ trans [ object blob [ ] ] ]\n");
     RenderController c;
-    RenderSettings s;
+    RenderJob s;
     s.width = 16;
     s.height = 16;
     c.start(path, {}, s);
@@ -285,7 +285,7 @@ mastersubgraph root [
 ]
 )");
     RenderController c;
-    RenderSettings s;
+    RenderJob s;
     s.width = 40;
     s.height = 30;
     c.start(path, {}, s);

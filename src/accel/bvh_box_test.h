@@ -1,0 +1,82 @@
+#pragma once
+// The single-ray box test of the 4-wide BVH, shared by the nearest-hit traversal
+// (bvh_traverse.cpp) and the any-hit traversal (bvh_any_hit.h): one SSE test gives a ray's
+// entry distance into all four child boxes.
+#include <algorithm>
+#include <cmath>
+
+#if defined(__SSE2__) || defined(_M_X64)
+#include <emmintrin.h>
+#define WHITTED_BVH_SSE 1
+#endif
+
+#include "accel/bvh.h"
+#include "accel/bvh_ray.h"
+
+namespace whitted::bvh_detail {
+
+// The ray as the box test wants it: origin, reciprocal direction (bvh_ray.h) and which box row
+// is the near plane per axis.
+struct BoxRay {
+    float o[3], inv[3];
+    int near_row[3], far_row[3];
+    explicit BoxRay(const Ray& r) {
+        for (int a = 0; a < 3; ++a) {
+            o[a] = r.origin[a];
+            inv[a] = safe_reciprocal(r.direction[a]);
+            const bool neg = std::signbit(inv[a]);
+            near_row[a] = neg ? 3 + a : a;
+            far_row[a] = neg ? a : 3 + a;
+        }
+    }
+};
+
+// Entry distances of the ray into the node's four boxes (t_near[i]); returns the mask of the
+// boxes entered within (t_min, t_max). Near/far planes are chosen by the direction's sign, so no
+// min/max per axis is needed.
+#ifdef WHITTED_BVH_SSE
+struct BoxTester {
+    __m128 o[3], inv[3];
+    const BoxRay& r;
+    explicit BoxTester(const BoxRay& ray) : r(ray) {
+        for (int a = 0; a < 3; ++a) {
+            o[a] = _mm_set1_ps(ray.o[a]);
+            inv[a] = _mm_set1_ps(ray.inv[a]);
+        }
+    }
+    int test(const Bvh4Node& n, float t_min, float t_max, float t_near[4]) const {
+        const __m128 nx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.near_row[0]]), o[0]), inv[0]);
+        const __m128 ny = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.near_row[1]]), o[1]), inv[1]);
+        const __m128 nz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.near_row[2]]), o[2]), inv[2]);
+        const __m128 fx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.far_row[0]]), o[0]), inv[0]);
+        const __m128 fy = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.far_row[1]]), o[1]), inv[1]);
+        const __m128 fz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.far_row[2]]), o[2]), inv[2]);
+        const __m128 enter = _mm_max_ps(_mm_max_ps(nx, ny), _mm_max_ps(nz, _mm_set1_ps(t_min)));
+        const __m128 leave = _mm_min_ps(_mm_min_ps(fx, fy), _mm_min_ps(fz, _mm_set1_ps(t_max)));
+        _mm_storeu_ps(t_near, enter);
+        return _mm_movemask_ps(_mm_cmple_ps(enter, leave));
+    }
+};
+#else
+struct BoxTester {
+    const BoxRay& r;
+    explicit BoxTester(const BoxRay& ray) : r(ray) {}
+    int test(const Bvh4Node& n, float t_min, float t_max, float t_near[4]) const {
+        int mask = 0;
+        for (int s = 0; s < 4; ++s) {
+            float enter = t_min, leave = t_max;
+            for (int a = 0; a < 3; ++a) {
+                enter = std::max((n.box[r.near_row[a]][s] - r.o[a]) * r.inv[a], enter);
+                leave = std::min((n.box[r.far_row[a]][s] - r.o[a]) * r.inv[a], leave);
+            }
+            t_near[s] = enter;
+            mask |= int(enter <= leave) << s;
+        }
+        return mask;
+    }
+};
+#endif
+
+inline int lowest_bit(int mask) { return __builtin_ctz(unsigned(mask)); }
+
+}  // namespace whitted::bvh_detail

@@ -1,0 +1,33 @@
+#include "film/film.h"
+
+#include <algorithm>
+
+namespace whitted {
+
+Film::Film(int width, int height, const PixelRegion& region)
+    : width_(width), height_(height), region_(region),
+      pixels_(std::size_t(std::max(0, region.width())) * std::size_t(std::max(0, region.height()))) {}
+
+void Film::copy_from(const Film& from, const PixelRegion& r) {
+    for (int y = r.y0; y < r.y1; ++y)
+        std::copy_n(&from.at(r.x0, y), r.width(), &at(r.x0, y));
+}
+
+Image Film::to_image() const {
+    Image image(width_, height_);
+    write_to(image, region_);
+    return image;
+}
+
+void Film::write_to(Image& image, const PixelRegion& r) const {
+    for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x) {
+            const glm::vec3 c = at(x, y).value();
+            std::uint8_t* p = &image.rgb[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 3];
+            p[0] = to_byte(c.x);
+            p[1] = to_byte(c.y);
+            p[2] = to_byte(c.z);
+        }
+}
+
+}  // namespace whitted

@@ -1,0 +1,19 @@
+// The one place that maps a render mode to its integrator.
+#include "integrator/debug_views.h"
+#include "integrator/integrator.h"
+#include "integrator/whitted_integrator.h"
+
+namespace whitted {
+
+std::unique_ptr<Integrator> make_integrator(const Scene& scene, const Camera& camera,
+                                            const IntegratorSettings& settings) {
+    switch (settings.mode) {
+        case RenderMode::Whitted: return std::make_unique<WhittedIntegrator>(scene, camera, settings.max_depth);
+        case RenderMode::Raycast: return std::make_unique<RaycastIntegrator>(scene, camera);
+        case RenderMode::Normals: return std::make_unique<NormalsIntegrator>(scene, camera);
+        case RenderMode::Depth: return std::make_unique<DepthIntegrator>(scene, camera);
+    }
+    return nullptr;
+}
+
+}  // namespace whitted

@@ -1,0 +1,52 @@
+#pragma once
+// One render, described once: what the frontends (CLI, viewer; MPI ranks later) ask of the
+// renderer. The image size, the part of it to render, which samples, how, and how to report.
+#include <atomic>
+#include <functional>
+#include <optional>
+
+#include "camera/camera.h"
+#include "film/film.h"
+#include "integrator/integrator.h"
+
+namespace whitted {
+
+using Tile = PixelRegion;
+
+// How many samples each pixel gets and where: aa × aa sub-pixel cells, spp samples in each
+// (sampler/sampler.h); adaptive anti-aliasing as POV-Ray's +A.
+struct SamplingSettings {
+    int aa = 1;   // 1..Sampler::kMaxAa
+    int spp = 1;  // samples per cell, 1..Sampler::kMaxSpp
+    // > 0 (with aa > 1 and spp = 1): each pixel's centre first; only the pixels whose centre colour
+    // differs from one of its four neighbours' by more than this in some channel (colours clamped
+    // to [0, 1]) get their aa × aa samples, the others keep their centre. 0 = every pixel.
+    float aa_threshold = 0.0f;
+    int samples_per_pixel() const { return Sampler(aa, spp).samples_per_pixel(); }
+    bool adaptive() const { return aa > 1 && spp == 1 && aa_threshold > 0.0f; }
+};
+
+struct RenderJob {
+    int width = 640, height = 480;  // the whole image
+    std::optional<PixelRegion> region;  // the part to render (inside the image); none = all of it
+    std::optional<Camera> camera;       // none = the scene file's camera
+    IntegratorSettings integrator;
+    SamplingSettings sampling;
+    // The samples of each pixel to take now: [sample_begin, sample_end) of samples_per_pixel()
+    // (-1 = to the last). A film that already holds the samples before sample_begin gets the rest
+    // added in order, so rendering in passes gives the same bytes as in one go. Adaptive
+    // anti-aliasing renders all samples at once.
+    int sample_begin = 0, sample_end = -1;
+    int threads = 0;  // 0 = all hardware threads
+    int tile_size = 32;
+    // Set by another thread (or a signal handler) to stop; checked at least once per tile row.
+    const std::atomic<bool>* cancel = nullptr;
+    // Called from worker threads as each tile is finished, its pixels in the film (thread-safe).
+    std::function<void(const Tile&)> on_tile;
+
+    PixelRegion render_region() const { return region.value_or(PixelRegion{0, 0, width, height}); }
+    Camera camera_for(const Scene& scene) const { return camera.value_or(scene.flat.camera); }
+    int tile_count() const;
+};
+
+}  // namespace whitted

@@ -1,0 +1,122 @@
+#include "sampler/sampler.h"
+
+#include <algorithm>
+#include <array>
+
+namespace whitted {
+namespace {
+
+std::uint64_t mix64(std::uint64_t v) {  // splitmix64's finaliser
+    v ^= v >> 30;
+    v *= 0xbf58476d1ce4e5b9ull;
+    v ^= v >> 27;
+    v *= 0x94d049bb133111ebull;
+    v ^= v >> 31;
+    return v;
+}
+
+std::uint64_t hash(const SampleKey& key, std::uint32_t dim, std::uint32_t seed) {
+    return mix64((std::uint64_t(key.x) << 32 | key.y) ^ mix64(std::uint64_t(dim) << 32 | seed));
+}
+
+std::uint32_t reverse_bits(std::uint32_t v) {
+    v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
+    v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
+    v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
+    v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
+    return (v >> 16) | (v << 16);
+}
+
+// The generator matrix of the Sobol sequence's second dimension (primitive polynomial x + 1,
+// m_k = 2·m_{k-1} xor m_{k-1}): column k is m_{k+1} in the top bits. The first is the identity
+// (bit reversal: the van der Corput sequence).
+constexpr std::array<std::uint32_t, 32> kSobolDim1 = [] {
+    std::array<std::uint32_t, 32> c{};
+    std::uint32_t m = 1;
+    for (int k = 0; k < 32; ++k) {
+        c[std::size_t(k)] = m << (31 - k);
+        m = (m << 1) ^ m;
+    }
+    return c;
+}();
+
+std::uint32_t sobol_dim1(std::uint32_t i) {
+    std::uint32_t v = 0;
+    for (int k = 0; i; i >>= 1, ++k)
+        if (i & 1) v ^= kSobolDim1[std::size_t(k)];
+    return v;
+}
+
+// Nested uniform scrambling approximated by a hash that only carries bits from less to more
+// significant positions of the reversed value (Laine and Karras 2011; pbrt-v4's FastOwenScrambler).
+std::uint32_t owen_scramble(std::uint32_t v, std::uint32_t seed) {
+    v = reverse_bits(v);
+    v ^= v * 0x3d20adeau;
+    v += seed;
+    v *= (seed >> 16) | 1u;
+    v ^= v * 0x05526c56u;
+    v ^= v * 0x53a22864u;
+    return reverse_bits(v);
+}
+
+// A random-looking permutation of [0, n), element i (Kensler 2013, as pbrt-v4's PermutationElement).
+std::uint32_t permutation_element(std::uint32_t i, std::uint32_t n, std::uint32_t p) {
+    std::uint32_t w = n - 1;
+    w |= w >> 1;
+    w |= w >> 2;
+    w |= w >> 4;
+    w |= w >> 8;
+    w |= w >> 16;
+    do {
+        i ^= p;
+        i *= 0xe170893du;
+        i ^= p >> 16;
+        i ^= (i & w) >> 4;
+        i ^= p >> 8;
+        i *= 0x0929eb3fu;
+        i ^= p >> 23;
+        i ^= (i & w) >> 1;
+        i *= 1u | p >> 27;
+        i *= 0x6935fa69u;
+        i ^= (i & w) >> 11;
+        i *= 0x74dcb303u;
+        i ^= (i & w) >> 2;
+        i *= 0x9e501cc3u;
+        i ^= (i & w) >> 2;
+        i *= 0xc860a3dfu;
+        i &= w;
+        i ^= i >> 5;
+    } while (i >= n);
+    return (i + p) % n;
+}
+
+float to_unit(std::uint32_t v) { return std::min(float(v) * 0x1p-32f, 0x1.fffffep-1f); }
+
+// Point `index` of `n` of a scrambled, permuted 2-D Sobol set seeded by `h`.
+glm::vec2 sobol_2d(std::uint32_t index, std::uint32_t n, std::uint64_t h) {
+    const std::uint32_t i = permutation_element(index, n, std::uint32_t(h));
+    const std::uint64_t h2 = mix64(h);  // the second coordinate's scramble, independent of the first's
+    return {to_unit(owen_scramble(reverse_bits(i), std::uint32_t(h >> 32))),
+            to_unit(owen_scramble(sobol_dim1(i), std::uint32_t(h2)))};
+}
+
+}  // namespace
+
+Sampler::Sampler(int aa, int spp, std::uint32_t seed)
+    : aa_(std::clamp(aa, 1, kMaxAa)), spp_(std::clamp(spp, 1, kMaxSpp)), seed_(seed) {}
+
+glm::vec2 Sampler::pixel_offset(const SampleKey& key) const {
+    const int cells = aa_ * aa_;
+    const int cell = int(key.index % std::uint32_t(cells));
+    glm::vec2 in_cell(0.5f);
+    if (spp_ > 1) in_cell = sobol_2d(key.index / std::uint32_t(cells), std::uint32_t(spp_), hash(key, dimension::kFilm, seed_));
+    const float step = 1.0f / float(aa_);
+    return {(float(cell % aa_) + in_cell.x) * step, (float(cell / aa_) + in_cell.y) * step};
+}
+
+glm::vec2 Sampler::get2d(const SampleKey& key, std::uint32_t dim) const {
+    if (centred()) return glm::vec2(0.5f);
+    return sobol_2d(key.index, std::uint32_t(samples_per_pixel()), hash(key, dim, seed_));
+}
+
+}  // namespace whitted
