@@ -73,6 +73,10 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 1000));
     app.add_option("--aa", o.settings.sampling.aa, "Anti-aliasing: N x N rays per pixel, averaged")
         ->check(CLI::Range(1, Sampler::kMaxAa));
+    app.add_option("--spp", o.settings.sampling.spp,
+                   "Samples per pixel (per sub-pixel with --aa) for soft shadows, depth of field and gloss; they "
+                   "arrive in passes")
+        ->check(CLI::Range(1, Sampler::kMaxSpp));
     app.add_option("--aa-threshold", o.settings.sampling.aa_threshold,
                    "Adaptive anti-aliasing: only where a pixel differs from a neighbour by more (0-1); 0 = everywhere")
         ->check(CLI::Range(0.0f, 1.0f))
@@ -107,6 +111,11 @@ int main(int argc, char** argv) {
     }
     if (*shot && !is_supported_output(o.screenshot)) {
         std::cerr << "whitted-view: error: cannot write '" << o.screenshot << "': use .png, .bmp, .ppm, .jpg or .jpeg\n";
+        return 1;
+    }
+    if (o.settings.sampling.aa_threshold > 0.0f && o.settings.sampling.spp > 1) {
+        std::cerr << "whitted-view: error: --aa-threshold compares the colours of pixel centres, which --spp > 1 does "
+                     "not take; use one or the other\n";
         return 1;
     }
     if (!o.screenshot.empty()) o.exit_when_done = true;

@@ -209,6 +209,9 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     tool(mode_, "mode", 10);
     aa_ = spinner("aa", "AA", 10, 44, 1, Sampler::kMaxAa, options.settings.sampling.aa,
                   "Anti-aliasing: N x N rays per pixel, averaged (1 = one ray through the pixel centre)");
+    spp_ = spinner("spp", "SPP", 10, 60, 1, Sampler::kMaxSpp, options.settings.sampling.spp,
+                   "Samples per pixel (per anti-aliasing cell) for soft shadows, depth of field and gloss: they "
+                   "arrive in passes, the image refining as you watch; Stop keeps the passes done");
     const int hw = int(std::max(1u, std::thread::hardware_concurrency()));
     threads_ = spinner("threads", "Threads", 10, 52, 1, 1024,
                        options.settings.threads > 0 ? options.settings.threads : hw, "Worker threads");
@@ -348,6 +351,7 @@ void ViewerWindow::read_controls(RenderJob& s, bool& fit) {
     s.integrator.max_depth = int(depth_->value());
     s.integrator.mode = RenderMode(std::max(0, mode_->value()));
     s.sampling.aa = int(aa_->value());
+    s.sampling.spp = int(spp_->value());
     s.threads = int(threads_->value());
 }
 
@@ -476,16 +480,21 @@ void ViewerWindow::update_status(const RenderStatus& st) {
         case RenderState::Idle: std::snprintf(buf, sizeof buf, "ready"); break;
         case RenderState::Loading: std::snprintf(buf, sizeof buf, "loading... %.1f s", st.elapsed_seconds); break;
         case RenderState::Rendering:
-            std::snprintf(buf, sizeof buf, "rendering %d×%d: %d%% (%d/%d tiles), %.1f s", st.settings.width,
-                          st.settings.height, pct, st.tiles_done, st.tiles_total, st.elapsed_seconds);
+            if (st.passes_total > 1)
+                std::snprintf(buf, sizeof buf, "rendering %d×%d: %d%%, %d of %d samples/pixel done, %.1f s",
+                              st.settings.width, st.settings.height, pct, st.samples_done, st.samples_total,
+                              st.elapsed_seconds);
+            else
+                std::snprintf(buf, sizeof buf, "rendering %d×%d: %d%% (%d/%d tiles), %.1f s", st.settings.width,
+                              st.settings.height, pct, st.tiles_done, st.tiles_total, st.elapsed_seconds);
             break;
         case RenderState::Finished:
-            std::snprintf(buf, sizeof buf, "done %d×%d in %.2f s", st.settings.width, st.settings.height,
-                          st.elapsed_seconds);
+            std::snprintf(buf, sizeof buf, "done %d×%d, %d samples/pixel, in %.2f s", st.settings.width,
+                          st.settings.height, st.samples_total, st.elapsed_seconds);
             break;
         case RenderState::Stopped:
-            std::snprintf(buf, sizeof buf, "stopped at %d%% (%d/%d tiles), %.1f s", pct, st.tiles_done,
-                          st.tiles_total, st.elapsed_seconds);
+            std::snprintf(buf, sizeof buf, "stopped at %d%% (%d/%d tiles, %d of %d samples/pixel complete), %.1f s",
+                          pct, st.tiles_done, st.tiles_total, st.samples_done, st.samples_total, st.elapsed_seconds);
             break;
         case RenderState::Failed: std::snprintf(buf, sizeof buf, "the scene has errors"); break;
         case RenderState::MissingTextures: std::snprintf(buf, sizeof buf, "textures not found"); break;

@@ -87,7 +87,7 @@ private:
 
     Fl_Menu_Bar* menu_ = nullptr;
     Fl_Button *render_button_ = nullptr, *stop_button_ = nullptr;
-    Fl_Spinner *width_ = nullptr, *height_ = nullptr, *depth_ = nullptr, *aa_ = nullptr, *threads_ = nullptr;
+    Fl_Spinner *width_ = nullptr, *height_ = nullptr, *depth_ = nullptr, *aa_ = nullptr, *spp_ = nullptr, *threads_ = nullptr;
     Fl_Check_Button* fit_ = nullptr;
     Fl_Choice* mode_ = nullptr;
     // The tool bar's widgets, left to right, with the size each was made at: layout() keeps it.
