@@ -11,8 +11,12 @@
 # ior); specular highlights; a background colour; instancing through the
 # mastersubgraphs `pillar` and `tiles3`, each used several times via `subgraph`.
 # 40 objects in all. No textures.
+# The distribution effects of scene-format.md §9.1, seen with --spp > 1: soft shadows
+# from the key light (a disc, `radius`), depth of field (camera `aperture`, in focus
+# at the `focus` point), glossy floor tiles and a brushed gold cylinder (`gloss`).
+# With one sample per pixel they fall back to the sharp lab model.
 #
-# Render: whitted scenes/showcase.sc -o showcase.png --width 800 --height 600
+# Render: whitted scenes/showcase.sc -o showcase.png --width 800 --height 600 --spp 16
 
 background [
   color 0.32 0.45 0.65
@@ -24,6 +28,7 @@ camera [
   up 0 1 0
   angle 42
   near-far 0.1 100
+  aperture 0.15
 ]
 
 # Key light: warm point light, up and to the right, gently attenuated.
@@ -32,6 +37,7 @@ light [
   position 6 9 6
   color 1.5 1.4 1.2
   function 1 0.02 0.004
+  radius 1.2
 ]
 
 # Fill light: dim, cool, from the left.
@@ -94,6 +100,7 @@ mastersubgraph tiles3 [
       specular 0.3 0.3 0.3
       shine 20
       reflect 0.15 0.15 0.15
+      gloss 60
     ]
   ]
   trans [
@@ -105,6 +112,7 @@ mastersubgraph tiles3 [
       specular 0.3 0.3 0.3
       shine 20
       reflect 0.15 0.15 0.15
+      gloss 60
     ]
   ]
   trans [
@@ -116,6 +124,7 @@ mastersubgraph tiles3 [
       specular 0.3 0.3 0.3
       shine 20
       reflect 0.15 0.15 0.15
+      gloss 60
     ]
   ]
 ]
@@ -286,6 +295,7 @@ mastersubgraph root [
       specular 0.9 0.8 0.5
       shine 50
       reflect 0.2 0.16 0.06
+      gloss 25
     ]
   ]
 

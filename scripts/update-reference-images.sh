@@ -19,3 +19,8 @@ find . -name '*.sc' | sort | while read -r scene; do
 done
 "$cli" showcase.sc -o "$out/showcase__aa3.png" --width 160 --height 120 --aa 3 -q
 echo "$out/showcase__aa3.png"
+for scene in features/soft_shadows features/depth_of_field features/glossy showcase; do
+    name="${scene//\//__}__spp16"
+    "$cli" "$scene.sc" -o "$out/$name.png" --width 160 --height 120 --spp 16 -q
+    echo "$out/$name.png"
+done

@@ -71,7 +71,7 @@ Difference compare(const Image& a, const Image& b) {
 }
 
 // Renders `scene` at the test size and compares it with reference `name`.png.
-void expect_matches_reference(const fs::path& scene, const std::string& name, int aa) {
+void expect_matches_reference(const fs::path& scene, const std::string& name, int aa, int spp = 1) {
     const fs::path failed_dir = fs::temp_directory_path() / "whitted-regression";
     {
         SCOPED_TRACE(name);
@@ -88,6 +88,7 @@ void expect_matches_reference(const fs::path& scene, const std::string& name, in
         options.width = kWidth;
         options.height = kHeight;
         options.sampling.aa = aa;
+        options.sampling.spp = spp;
         Image image(kWidth, kHeight);
         render(*loaded.scene, options, image);
 
@@ -112,6 +113,13 @@ TEST(SceneImages, EveryBundledSceneMatchesItsReference) {
 
 TEST(SceneImages, TheAntiAliasedShowcaseMatchesItsReference) {
     expect_matches_reference(kScenes / "showcase.sc", "showcase__aa3", 3);
+}
+
+// The distribution effects (§9.1) need samples: their scenes and the showcase at 16 per pixel.
+TEST(SceneImages, TheDistributionEffectsMatchTheirReferencesAt16Samples) {
+    for (const char* scene : {"features/soft_shadows.sc", "features/depth_of_field.sc", "features/glossy.sc",
+                              "showcase.sc"})
+        expect_matches_reference(kScenes / scene, reference_name(kScenes / scene) + "__spp16", 1, 16);
 }
 
 // The comparison itself must catch real changes: lighting switched off, and (subtler) the
