@@ -13,6 +13,7 @@
 #include "bench_scenes.h"
 #include "film/image.h"
 #include "integrator/glass_transmittance.h"
+#include "render/load_scene.h"
 #include "render/renderer.h"
 
 namespace whitted::bench {
@@ -185,6 +186,28 @@ void BM_Render1080p(benchmark::State& state) {
     state.counters["rays"] = benchmark::Counter(double(rays.total()), benchmark::Counter::kIsRate);
 }
 
+// The bundled showcase with its §9.1 effects (disc light, lens, gloss) at 640×480: rays per second
+// at 1 sample per pixel (every effect at its centre: the lab model) and at 16.
+void BM_ShowcaseSpp(benchmark::State& state) {
+    static const LoadResult loaded = load_scene(std::string(WHITTED_SCENES_DIR) + "/showcase.sc");
+    if (!loaded.ok()) {
+        state.SkipWithError("showcase.sc did not load");
+        return;
+    }
+    RenderJob job;
+    job.width = 640;
+    job.height = 480;
+    job.sampling.spp = int(state.range(0));
+    job.threads = int(state.range(1));
+    Image image(job.width, job.height);
+    RayCounts rays;
+    for (auto _ : state) rays += render(*loaded.scene, job, image).rays;
+    state.counters["rays"] = benchmark::Counter(double(rays.total()), benchmark::Counter::kIsRate);
+    state.counters["samples"] =
+        benchmark::Counter(double(job.width) * job.height * job.sampling.spp * double(state.iterations()),
+                           benchmark::Counter::kIsRate);
+}
+
 BENCHMARK(BM_BvhBuild)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_PrimarySpheres1k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_PrimarySpheres1kPacket)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -192,6 +215,7 @@ BENCHMARK(BM_ShadowSpheres1k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmar
 BENCHMARK(BM_PrimaryGrid1M)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_PrimaryGrid1MPacket)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ShadowGrid1M)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ShowcaseSpp)->ArgNames({"spp", "threads"})->Args({1, 1})->Args({1, 2})->Args({16, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Render1080p)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

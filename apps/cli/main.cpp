@@ -159,11 +159,11 @@ int run(int argc, char** argv) {
     if (stats) {
         const auto& ls = loaded.stats;
         std::fprintf(stderr,
-                     "objects %zu, lights %zu, textures %zu\n"
+                     "objects %zu, lights %zu, textures %zu; %d samples per pixel\n"
                      "parse %.3fs, flatten %.3fs, textures %.3fs, build %.3fs, render %.3fs (%d threads)\n"
                      "rays: camera %llu, reflected %llu, refracted %llu, shadow %llu; %.2f Mrays/s\n",
-                     ls.objects, ls.lights, ls.textures, ls.parse_seconds, ls.flatten_seconds, ls.texture_seconds,
-                     ls.build_seconds, rs.seconds, rs.threads,
+                     ls.objects, ls.lights, ls.textures, job.sampling.samples_per_pixel(), ls.parse_seconds,
+                     ls.flatten_seconds, ls.texture_seconds, ls.build_seconds, rs.seconds, rs.threads,
                      (unsigned long long)rs.rays.camera, (unsigned long long)rs.rays.reflected,
                      (unsigned long long)rs.rays.refracted, (unsigned long long)rs.rays.shadow,
                      rs.seconds > 0 ? double(rs.rays.total()) / rs.seconds * 1e-6 : 0.0);
