@@ -112,6 +112,69 @@ TEST(RenderController, RendersProgressivelyToTheSameImageAsADirectRender) {
     EXPECT_TRUE(c.wait_all_threads(1s));
 }
 
+// Samples arrive in passes (one per cell over the whole image, then doubling); the passes add up
+// to exactly the image of one render of all the samples (the CLI's).
+TEST(RenderController, SamplePassesAddUpToTheImageOfOneRender) {
+    EXPECT_EQ(sample_passes({1, 1, 0.0f}), (std::vector<int>{1}));
+    EXPECT_EQ(sample_passes({1, 16, 0.0f}), (std::vector<int>{1, 2, 4, 8, 16}));
+    EXPECT_EQ(sample_passes({2, 5, 0.0f}), (std::vector<int>{4, 8, 16, 20}));
+    EXPECT_EQ(sample_passes({3, 1, 0.2f}), (std::vector<int>{9}));  // adaptive: one pass
+
+    test::SceneBuilder b;
+    Material m;
+    m.diffuse = glm::vec3(0.8f, 0.4f, 0.2f);
+    m.reflect = glm::vec3(0.3f);
+    m.gloss = 40;
+    b.add(ShapeKind::Sphere, test::translate_scale({0, 0, -3}, glm::vec3(1.5f)), m);
+    b.add(ShapeKind::Cube, test::translate_scale({0, -1.5f, -3}, {8, 0.2f, 8}), Material{});
+    Light soft = test::point_light({2, 3, 0}, glm::vec3(0.8f));
+    soft.radius = 0.7f;
+    auto scene = std::make_shared<const Scene>(b.light(soft).build());
+    RenderJob s;
+    s.width = 64;
+    s.height = 48;
+    s.sampling.spp = 8;
+    s.threads = 2;
+    RenderController c;
+    c.start(scene, s);
+    ASSERT_TRUE(c.wait(60s));
+    const RenderStatus st = c.status();
+    ASSERT_EQ(st.state, RenderState::Finished);
+    EXPECT_EQ(st.passes_total, 4);
+    EXPECT_EQ(st.passes_done, 4);
+    EXPECT_EQ(st.samples_done, 8);
+    EXPECT_EQ(st.samples_total, 8);
+    EXPECT_EQ(st.tiles_done, st.tiles_total);
+    Image direct(64, 48);
+    s.threads = 1;
+    render(*scene, s, direct);
+    EXPECT_EQ(c.image().rgb, direct.rgb);
+}
+
+TEST(RenderController, StopKeepsThePassesDone) {
+    RenderJob s;
+    s.width = 120;
+    s.height = 90;
+    s.sampling.spp = 4096;  // far more passes than finish before the stop
+    s.threads = 2;
+    RenderController c;
+    c.start(busy_scene(), s);
+    const auto deadline = Clock::now() + 60s;
+    while (c.status().passes_done < 2 && Clock::now() < deadline) std::this_thread::sleep_for(2ms);
+    ASSERT_GE(c.status().passes_done, 2);
+    c.stop();
+    ASSERT_TRUE(c.wait_all_threads(10s));
+    const RenderStatus st = c.status();
+    EXPECT_EQ(st.state, RenderState::Stopped);
+    EXPECT_GE(st.samples_done, 2);
+    EXPECT_LT(st.samples_done, 4096);
+    // Every pixel has the samples of the passes done: the whole image is there, none left black.
+    const Image img = c.image();
+    std::size_t black = 0;
+    for (std::size_t p = 0; p < img.rgb.size(); p += 3) black += !img.rgb[p] && !img.rgb[p + 1] && !img.rgb[p + 2];
+    EXPECT_LT(black, img.rgb.size() / 3 / 10) << "the busy scene fills the image";
+}
+
 TEST(RenderController, StopIsImmediateAndKeepsWhatWasRendered) {
     RenderController c;
     c.start(busy_scene(), heavy_settings());
