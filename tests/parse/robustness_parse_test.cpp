@@ -9,6 +9,7 @@
 
 #include "parse_test_util.h"
 #include "support/wild_corpus.h"
+#include "support/needs.h"
 
 namespace whitted {
 namespace {
@@ -73,7 +74,7 @@ TEST(ParseRobustness, RandomBytes) {
 
 TEST(ParseRobustness, TruncatedAndMutatedWildFiles) {
     const auto dir = wild_corpus_dir();
-    if (dir.empty()) GTEST_SKIP() << wild_corpus_missing_reason();
+    WHITTED_NEEDS(test::kSkipSharedTests, dir.empty() ? wild_corpus_missing_reason() : "");
     std::mt19937 rng(12345);
     int files = 0;
     for (const auto& path : wild_scene_files(dir)) {

@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "film/image_io.h"
+#include "support/needs.h"
 #include "support/run_process.h"
 
 namespace whitted {
@@ -35,6 +36,15 @@ std::string find_on_path(const std::string& name) {
     for (std::string dir; std::getline(dirs, dir, ':');)
         if (!dir.empty() && access((dir + "/" + name).c_str(), X_OK) == 0) return dir + "/" + name;
     return "";
+}
+
+// "" when every tool is on the PATH, else which are missing and where they come from.
+std::string missing_tools(std::initializer_list<const char*> tools) {
+    std::string missing;
+    for (const char* tool : tools)
+        if (find_on_path(tool).empty()) missing += std::string(missing.empty() ? "" : ", ") + tool;
+    return missing.empty() ? "" : "the screen test needs " + missing +
+                                      " (Debian xdotool, x11-apps, imagemagick: scripts/install-deps.sh --viewer-test)";
 }
 
 // A child process with its output in a log file; killed (SIGTERM, then SIGKILL) when destroyed.
@@ -296,10 +306,9 @@ std::pair<int, int> find_subimage(const Image& whole, const Image& part, std::pa
 TEST_F(ViewerE2E, TheWindowShowsTheSameImageAsTheCommandLineRenderer) {
     Xvfb x;
     std::string why;
-    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xwd", "convert"}));
     const std::string xwd = find_on_path("xwd"), convert = find_on_path("convert");
-    if (xwd.empty() || convert.empty())
-        GTEST_SKIP() << "viewer screen test skipped: needs xwd (x11-apps) and convert (imagemagick)";
 
     const int W = 320, H = 240;
     auto cli = run_process({test::cli_path(), scene_, "-o", dir_ + "/cli.png", "--width", std::to_string(W),
@@ -350,7 +359,7 @@ TEST_F(ViewerE2E, TheWindowShowsTheSameImageAsTheCommandLineRenderer) {
 TEST_F(ViewerE2E, ScreenshotFlagSavesTheDisplayedPixels) {
     Xvfb x;
     std::string why;
-    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
     auto cli = run_process({test::cli_path(), scene_, "-o", dir_ + "/cli.png", "--width", "200", "--height", "150",
                             "--mode", "normals", "-q"});
     ASSERT_EQ(cli.exit_code, 0) << cli.output;
@@ -369,7 +378,7 @@ TEST_F(ViewerE2E, ScreenshotFlagSavesTheDisplayedPixels) {
 TEST_F(ViewerE2E, ASceneWithErrorsIsReportedNotACrash) {
     Xvfb x;
     std::string why;
-    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
     std::ofstream(scene_) << "camera [ eye 0 0 5 ]\nmastersubgraph root [ trans [ object blob [ ] ] ]\n";
     const std::string ready = dir_ + "/ready.txt";
     Child viewer({WHITTED_VIEWER_PATH, scene_, "--exit-when-done", "--ready-file", ready}, dir_ + "/viewer.log",
@@ -434,10 +443,8 @@ bool overlap(const Box& a, const Box& b) {
 TEST_F(ViewerE2E, TheToolBarKeepsItsLayoutWhenTheWindowIsResized) {
     Xvfb x;
     std::string why;
-    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
-    for (const char* tool : {"xdotool", "xwd", "convert"})
-        if (find_on_path(tool).empty())
-            GTEST_SKIP() << "viewer screen test skipped: needs xdotool, xwd (x11-apps) and convert (imagemagick)";
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xdotool", "xwd", "convert"}));
 
     const std::string ready = dir_ + "/ready.txt";
     Child viewer({WHITTED_VIEWER_PATH, scene_, "--width", "160", "--height", "120", "--threads", "2", "--ready-file",
@@ -516,8 +523,8 @@ TEST_F(ViewerE2E, TheToolBarKeepsItsLayoutWhenTheWindowIsResized) {
 TEST_F(ViewerE2E, SaveImageAsStartsInTheScenesFolder) {
     Xvfb x;
     std::string why;
-    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
-    if (find_on_path("xdotool").empty()) GTEST_SKIP() << "viewer screen test skipped: needs xdotool";
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xdotool"}));
     fs::create_directory(dir_ + "/scenes");
     const std::string scene = dir_ + "/scenes/room.sc", ready = dir_ + "/ready.txt";
     fs::copy_file(scene_, scene);
@@ -594,10 +601,8 @@ protected:
     void SetUp() override {
         ViewerE2E::SetUp();
         ready_ = dir_ + "/ready.txt";
-        if (!x_.start(dir_, why_)) GTEST_SKIP() << "viewer screen test skipped: " << why_;
-        for (const char* tool : {"xwd", "convert"})
-            if (find_on_path(tool).empty())
-                GTEST_SKIP() << "viewer screen test skipped: needs xwd (x11-apps) and convert (imagemagick)";
+        WHITTED_NEEDS(test::kSkipViewerTests, x_.start(dir_, why_) ? "" : "no X server for the screen test: " + why_);
+        WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xwd", "convert"}));
         std::ofstream(scene_) << sphere_scene("0.9 0.1 0.1");
         red_ = cli_image(scene_, kW, kH, dir_ + "/red.png");
         std::ofstream(dir_ + "/blue.sc") << sphere_scene("0.1 0.1 0.9");
@@ -655,7 +660,7 @@ TEST_F(ViewerOnScreen, AChangedSceneIsReloadedAndShown) {
 
 // Without --watch a saved change is not picked up (until File > Reload, Ctrl+R).
 TEST_F(ViewerOnScreen, WithoutWatchAChangedSceneIsNotReloaded) {
-    if (find_on_path("xdotool").empty()) GTEST_SKIP() << "viewer screen test skipped: needs xdotool";
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xdotool"}));
     auto viewer = start_viewer({});
     Ready first;
     ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
@@ -685,7 +690,7 @@ TEST_F(ViewerOnScreen, WithoutWatchAChangedSceneIsNotReloaded) {
 // Fit window: once a resize has settled the scene is rendered again (without loading it again)
 // at the size of the new image area; resizes in quick succession give one render.
 TEST_F(ViewerOnScreen, FitWindowRendersAgainAtTheNewSizeAfterAResize) {
-    if (find_on_path("xdotool").empty()) GTEST_SKIP() << "viewer screen test skipped: needs xdotool";
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xdotool"}));
     auto viewer = start_viewer({"--fit", "--window-size", "640x480"});
     Ready first;
     ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
@@ -799,7 +804,7 @@ bool shows_a_dialog(const Image& screen, const Box& box) {
 // A texture that is not found: the viewer asks for its file in a dialog; Cancel draws it as the
 // magenta/black checkerboard, with a warning naming it; the viewer then quits cleanly.
 TEST_F(ViewerOnScreen, CancellingTheMissingTextureDialogDrawsACheckerboard) {
-    if (find_on_path("xdotool").empty()) GTEST_SKIP() << "viewer screen test skipped: needs xdotool";
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xdotool"}));
     std::ofstream(scene_) << sphere_scene("1 1 1", "nowhere.png");
     auto viewer = start_viewer({"--mode", "raycast"});  // unlit: the texture's own colours
 
