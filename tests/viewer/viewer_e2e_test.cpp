@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -44,7 +45,7 @@ std::string missing_tools(std::initializer_list<const char*> tools) {
     for (const char* tool : tools)
         if (find_on_path(tool).empty()) missing += std::string(missing.empty() ? "" : ", ") + tool;
     return missing.empty() ? "" : "the screen test needs " + missing +
-                                      " (Debian xdotool, x11-apps, imagemagick: scripts/install-deps.sh --viewer-test)";
+                                      " (Debian xdotool, x11-apps, imagemagick, tesseract-ocr: scripts/install-deps.sh --viewer-test)";
 }
 
 // A child process with its output in a log file; killed (SIGTERM, then SIGKILL) when destroyed.
@@ -429,11 +430,69 @@ Image grab_screen(const std::string& display, const std::string& png) {
     return screen;
 }
 
+// The text the screen grab `png` shows inside `box`, read by OCR (tesseract, on the region scaled
+// up 4× in grey: FLTK's small UI font is then read reliably). `lines`: one line, or a block.
+// For checks of what the user reads, where the ready file only says what the viewer meant to show.
+enum class Lines { One, Block };
+std::string screen_text(const std::string& png, const Box& box, Lines lines) {
+    const std::string region = png + "." + std::to_string(box.x) + "_" + std::to_string(box.y) + ".png";
+    auto r = run_process({"/bin/sh", "-c",
+                          "'" + find_on_path("convert") + "' '" + png + "' -crop " + std::to_string(box.w) + "x" +
+                              std::to_string(box.h) + "+" + std::to_string(box.x) + "+" + std::to_string(box.y) +
+                              " +repage -resize 400% -colorspace Gray '" + region + "' && '" +
+                              find_on_path("tesseract") + "' '" + region + "' - --psm " +
+                              (lines == Lines::One ? "7" : "6") + " 2>/dev/null"});
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return r.output;
+}
+
+// `text` without quotation marks, straight or curly (OCR reads ' as ‘ or ’, or doubles it):
+// compare what OCR read with what was meant with both unquoted.
+std::string unquoted(std::string text) {
+    for (const char* q : {"\u2018", "\u2019", "\u201C", "\u201D", "'", "\""})
+        for (std::size_t i; (i = text.find(q)) != std::string::npos;) text.erase(i, std::strlen(q));
+    return text;
+}
+// Whether OCR output `read` contains `meant`, quotation marks aside.
+bool reads(const std::string& read, const std::string& meant) {
+    return unquoted(read).find(unquoted(meant)) != std::string::npos;
+}
+
 // xdotool on our X server; returns the first line of its output (e.g. a window id).
 std::string xdotool(const std::string& display, const std::string& args) {
     auto r = run_process({"/bin/sh", "-c", "DISPLAY=" + display + " '" + find_on_path("xdotool") + "' " + args});
     EXPECT_EQ(r.exit_code, 0) << "xdotool " << args << ":\n" << r.output;
     return r.output.substr(0, r.output.find('\n'));
+}
+
+// The error of ASceneWithErrorsIsReportedNotACrash as the user reads it on the screen.
+TEST_F(ViewerE2E, ASceneWithErrorsShowsTheErrorOnTheScreen) {
+    Xvfb x;
+    std::string why;
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xwd", "convert", "tesseract"}));
+    std::ofstream(scene_) << "camera [ eye 0 0 5 ]\nmastersubgraph root [ trans [ object blob [ ] ] ]\n";
+    const std::string ready = dir_ + "/ready.txt";
+    Child viewer({WHITTED_VIEWER_PATH, scene_, "--ready-file", ready}, dir_ + "/viewer.log",
+                 {{"DISPLAY", x.display()}, {"ASAN_OPTIONS", asan_options_for_viewer()}});
+    Ready r;
+    ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready& n) { return n.state == "failed"; }, 60s))
+        << viewer.output();
+    const std::string png = dir_ + "/screen.png";
+    grab_screen(x.display(), png);
+    // In the status bar: the error (after the scene's folder, which OCR need not spell) and the
+    // state; in the messages panel: the error.
+    const std::string message = screen_text(png, r.fields["message"], Lines::One);
+    EXPECT_TRUE(reads(message, "scene.sc:2:")) << message << " (see " << png << ")";
+    EXPECT_TRUE(reads(message, "error: unknown object type 'blob'")) << message << " (see " << png << ")";
+    const std::string progress = screen_text(png, r.fields["progress"], Lines::One);
+    EXPECT_TRUE(reads(progress, "the scene has errors")) << progress << " (see " << png << ")";
+    const Box panel{r.window.x, r.area.y + r.area.h, r.window.w, r.fields["scene"].y - (r.area.y + r.area.h)};
+    const std::string panel_text = screen_text(png, panel, Lines::Block);
+    EXPECT_TRUE(reads(panel_text, "scene.sc:2:")) << panel_text << " (see " << png << ")";
+    EXPECT_TRUE(reads(panel_text, "error: unknown object type 'blob'")) << panel_text << " (see " << png << ")";
+    kill(viewer.pid, SIGTERM);
+    EXPECT_NE(viewer.wait_exit(10s), -1) << viewer.output();
 }
 
 bool overlap(const Box& a, const Box& b) {
@@ -725,6 +784,7 @@ TEST_F(ViewerOnScreen, FitWindowRendersAgainAtTheNewSizeAfterAResize) {
 
 // Names with '@' (the scene's, a texture's) show as written in the status bar and the panel.
 TEST_F(ViewerOnScreen, NamesWithAnAtSignShowAsWritten) {
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"tesseract"}));
     scene_ = dir_ + "/a@b.sc";
     std::ofstream(scene_) << sphere_scene("1 1 1", "t@x.png");
     auto viewer = start_viewer({"--missing-textures", "checker"});
@@ -740,6 +800,20 @@ TEST_F(ViewerOnScreen, NamesWithAnAtSignShowAsWritten) {
     ASSERT_FALSE(r.panel.empty());
     EXPECT_EQ(r.panel[0].rfind(warning, 0), 0u) << r.panel[0];
     EXPECT_NE(r.panel[0].find(texture), std::string::npos) << r.panel[0];
+
+    // What the user reads on the screen: the names with their '@', in the status bar and the
+    // messages panel (between the image area and the status bar).
+    const std::string png = dir_ + "/screen.png";
+    grab_screen(x_.display(), png);
+    const std::string scene_field = screen_text(png, r.fields["scene"], Lines::One);
+    EXPECT_TRUE(reads(scene_field, "a@b.sc: 1 objects")) << scene_field << " (see " << png << ")";
+    const std::string message_field = screen_text(png, r.fields["message"], Lines::One);
+    EXPECT_TRUE(reads(message_field, "a@b.sc:4:")) << message_field << " (see " << png << ")";
+    EXPECT_TRUE(reads(message_field, "warning: texture 't@x.png'")) << message_field << " (see " << png << ")";
+    const Box panel{r.window.x, r.area.y + r.area.h, r.window.w, r.fields["scene"].y - (r.area.y + r.area.h)};
+    const std::string panel_text = screen_text(png, panel, Lines::Block);
+    EXPECT_TRUE(reads(panel_text, "a@b.sc:4:")) << panel_text << " (see " << png << ")";
+    EXPECT_TRUE(reads(panel_text, texture)) << panel_text << " (see " << png << ")";
     kill(viewer->pid, SIGTERM);
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
