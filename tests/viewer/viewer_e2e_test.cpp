@@ -234,6 +234,7 @@ struct Box {
 struct Ready {
     std::uint64_t job = 0;  // the render reported
     bool reused = false;    // it reused the scene loaded before (the file had not changed)
+    int watch_ticks = 0;    // times its once-a-second watch timer has fired
     std::string state;
     Box window, area, image;  // the area is where the image is shown
     std::vector<std::pair<std::string, Box>> tools;  // left to right as made; x and w include the label
@@ -255,6 +256,7 @@ Ready read_ready(const std::string& path) {
             ls >> r.job >> word;
             r.reused = word == "reused";
         } else if (key == "state") ls >> r.state;
+        else if (key == "watch_ticks") ls >> r.watch_ticks;
         else if (key == "window") ls >> r.window.x >> r.window.y >> r.window.w >> r.window.h;
         else if (key == "area") ls >> r.area.x >> r.area.y >> r.area.w >> r.area.h;
         else if (key == "image") ls >> r.image.x >> r.image.y >> r.image.w >> r.image.h;
@@ -725,11 +727,15 @@ TEST_F(ViewerOnScreen, WithoutWatchAChangedSceneIsNotReloaded) {
     ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
         << viewer->output();
 
+    Ready before;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, before, [](const Ready&) { return true; }, 5s)) << viewer->output();
     rewrite_scene(scene_, sphere_scene("0.1 0.1 0.9"));
-    // Nothing to wait for: give the viewer time for several checks of the file (one a second).
-    std::this_thread::sleep_for(2500ms);
+    // Three ticks of the viewer's watch timer: with --watch, the change would have been seen at
+    // the first and its render reported by the third.
     Ready later;
-    ASSERT_TRUE(wait_for_ready(*viewer, ready_, later, [](const Ready&) { return true; }, 5s)) << viewer->output();
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, later,
+                               [&](const Ready& n) { return n.watch_ticks >= before.watch_ticks + 3; }, 30s))
+        << viewer->output();
     EXPECT_EQ(later.job, first.job) << "the scene was rendered again without --watch";
     EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen1.png"), red_, later.image))
         << "the red sphere is no longer on the screen (see " << dir_ << "/screen1.png)";
