@@ -86,6 +86,10 @@ struct Child {
         }
         return -1;
     }
+    // Sends `sig` if it still runs (never to pid -1, which would mean every process).
+    void signal(int sig) const {
+        if (pid > 0) kill(pid, sig);
+    }
     std::string output() const {
         std::ifstream in(log);
         return {std::istreambuf_iterator<char>(in), {}};
@@ -355,7 +359,7 @@ TEST_F(ViewerE2E, TheWindowShowsTheSameImageAsTheCommandLineRenderer) {
     EXPECT_LE(fx + W, wx + ww);
 
     // Ctrl-C / SIGTERM closes the window cleanly.
-    kill(viewer.pid, SIGTERM);
+    viewer.signal(SIGTERM);
     EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
 }
 
@@ -493,7 +497,7 @@ TEST_F(ViewerE2E, ASceneWithErrorsShowsTheErrorOnTheScreen) {
     const std::string panel_text = screen_text(png, panel, Lines::Block);
     EXPECT_TRUE(reads(panel_text, "scene.sc:2:")) << panel_text << " (see " << png << ")";
     EXPECT_TRUE(reads(panel_text, "error: unknown object type 'blob'")) << panel_text << " (see " << png << ")";
-    kill(viewer.pid, SIGTERM);
+    viewer.signal(SIGTERM);
     EXPECT_NE(viewer.wait_exit(10s), -1) << viewer.output();
 }
 
@@ -575,7 +579,7 @@ TEST_F(ViewerE2E, TheToolBarKeepsItsLayoutWhenTheWindowIsResized) {
         EXPECT_EQ(scene.y + scene.h, r.window.y + r.window.h);
         EXPECT_GE(progress.w, r.needs["progress"]);
     }
-    kill(viewer.pid, SIGTERM);
+    viewer.signal(SIGTERM);
     EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
 }
 
@@ -619,7 +623,7 @@ TEST_F(ViewerE2E, SaveImageAsStartsInTheScenesFolder) {
     ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready& n) { return !n.panel.empty(); }, 20s))
         << viewer.output();
     EXPECT_EQ(r.panel, std::vector<std::string>{error});
-    kill(viewer.pid, SIGTERM);
+    viewer.signal(SIGTERM);
     EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
 }
 
@@ -715,7 +719,7 @@ TEST_F(ViewerOnScreen, AChangedSceneIsReloadedAndShown) {
     EXPECT_FALSE(again.reused) << "the changed file must be loaded again";
     EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen2.png"), blue_, again.image))
         << "the blue sphere is not on the screen (see " << dir_ << "/screen2.png)";
-    kill(viewer->pid, SIGTERM);
+    viewer->signal(SIGTERM);
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
@@ -748,7 +752,7 @@ TEST_F(ViewerOnScreen, WithoutWatchAChangedSceneIsNotReloaded) {
         << viewer->output();
     EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen2.png"), blue_, later.image))
         << "the blue sphere is not on the screen after Reload (see " << dir_ << "/screen2.png)";
-    kill(viewer->pid, SIGTERM);
+    viewer->signal(SIGTERM);
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
@@ -784,7 +788,7 @@ TEST_F(ViewerOnScreen, FitWindowRendersAgainAtTheNewSizeAfterAResize) {
     const Image expected = cli_image(scene_, r.area.w, r.area.h, dir_ + "/fitted.png");
     EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen.png"), expected, r.image))
         << "the image at the new size is not on the screen (see " << dir_ << "/screen.png)";
-    kill(viewer->pid, SIGTERM);
+    viewer->signal(SIGTERM);
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
@@ -820,7 +824,7 @@ TEST_F(ViewerOnScreen, NamesWithAnAtSignShowAsWritten) {
     const std::string panel_text = screen_text(png, panel, Lines::Block);
     EXPECT_TRUE(reads(panel_text, "a@b.sc:4:")) << panel_text << " (see " << png << ")";
     EXPECT_TRUE(reads(panel_text, texture)) << panel_text << " (see " << png << ")";
-    kill(viewer->pid, SIGTERM);
+    viewer->signal(SIGTERM);
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
