@@ -36,11 +36,12 @@ TEST(CliInterrupt, TheSecondCtrlCEndsARenderTheFirstCouldNotStopInTime) {
     test::BackgroundProcess p({test::cli_path(), scene, "-o", out, "--width", "64", "--height", "64", "--max-depth",
                                "28", "--threads", "2", "-q"},
                               dir + "/log.txt");
-    // The first Ctrl-C once the render runs: the handler is there (before, SIGINT would kill the
-    // process outright) and the second render thread has started (before, the Ctrl-C would stop
-    // the load instead, which ends at once).
+    // The first Ctrl-C once the render is under way: the handler is there (before, SIGINT would
+    // kill the process outright) and the render thread besides the main one has worked for 50 ms,
+    // so it is inside a tile row, which it finishes before it stops (a Ctrl-C during the load
+    // would stop the load, which ends at once, as would one before the workers' first row).
     ASSERT_TRUE(p.wait_until_it_catches(SIGINT, 30s)) << p.output();
-    ASSERT_TRUE(p.wait_until_it_runs_threads(2, 30s)) << "the render did not start\n" << p.output();
+    ASSERT_TRUE(p.wait_until_a_second_thread_ran(50ms, 60s)) << "the render did not start\n" << p.output();
     ASSERT_TRUE(p.signal_and_wait_delivered(SIGINT, 10s)) << p.output();
     // It asked the render to stop, which cannot happen before the current row is done.
     EXPECT_EQ(p.wait_exit(300ms), -1) << "the render ended after one Ctrl-C: the test needs a slower scene\n"

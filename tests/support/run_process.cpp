@@ -163,11 +163,27 @@ bool BackgroundProcess::wait_until_it_catches(int signal, std::chrono::milliseco
     return poll_until(timeout, [&] { return status_mask_has(pid_, "SigCgt", signal); });
 }
 
-bool BackgroundProcess::wait_until_it_runs_threads(int threads, std::chrono::milliseconds timeout) const {
+bool BackgroundProcess::wait_until_a_second_thread_ran(std::chrono::milliseconds cpu,
+                                                       std::chrono::milliseconds timeout) const {
+    const long ticks_per_second = sysconf(_SC_CLK_TCK);
+    const long long wanted = (cpu.count() * ticks_per_second + 999) / 1000;
     return poll_until(timeout, [&] {
-        std::ifstream in("/proc/" + std::to_string(pid_) + "/status");
-        for (std::string line; std::getline(in, line);)
-            if (line.rfind("Threads:", 0) == 0) return std::atoi(line.c_str() + 8) >= threads;
+        std::error_code ec;
+        const std::string tasks = "/proc/" + std::to_string(pid_) + "/task";
+        for (const auto& task : std::filesystem::directory_iterator(tasks, ec)) {
+            if (task.path().filename() == std::to_string(pid_)) continue;  // the main thread
+            std::ifstream in(task.path() / "stat");
+            std::string stat((std::istreambuf_iterator<char>(in)), {});
+            const std::size_t after_name = stat.rfind(')');
+            if (after_name == std::string::npos) continue;
+            // After "pid (comm)": state is field 3; utime and stime are fields 14 and 15.
+            std::istringstream fields(stat.substr(after_name + 2));
+            std::string field;
+            long long utime = 0, stime = 0;
+            for (int i = 3; i <= 13 && fields >> field; ++i) {
+            }
+            if (fields >> utime >> stime && utime + stime >= wanted) return true;
+        }
         return false;
     });
 }

@@ -36,8 +36,9 @@ public:
     pid_t pid() const { return pid_; }
     // Waits until the process has a handler installed for `signal` (/proc/PID/status SigCgt).
     bool wait_until_it_catches(int signal, std::chrono::milliseconds timeout) const;
-    // Waits until the process runs at least `threads` threads (/proc/PID/status Threads).
-    bool wait_until_it_runs_threads(int threads, std::chrono::milliseconds timeout) const;
+    // Waits until a thread other than the main one has used at least `cpu` of processor time
+    // (/proc/PID/task/*/stat): a worker thread is well into its work.
+    bool wait_until_a_second_thread_ran(std::chrono::milliseconds cpu, std::chrono::milliseconds timeout) const;
     // Sends `signal` and waits until it is no longer pending, i.e. a thread has taken it.
     bool signal_and_wait_delivered(int signal, std::chrono::milliseconds timeout) const;
     // Its exit code (128 + signal if killed), or -1 if it still runs after `timeout`.
