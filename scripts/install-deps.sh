@@ -6,7 +6,7 @@ set -euo pipefail
 # although whitted never runs fluid; libfltk1.3-dev only recommends it.
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libcli11-dev libgtest-dev libgmock-dev
           libbenchmark-dev libfltk1.3-dev fluid libopenexr-dev)
-if [[ "${1:-}" == "--viewer-test" ]]; then packages+=(xvfb x11-apps imagemagick xdotool); fi
+if [[ "${1:-}" == "--viewer-test" ]]; then packages+=(xvfb x11-apps imagemagick xdotool tesseract-ocr); fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Re-renders the reference images of the image regression test (tests/regression/) from every
-# scene under scenes/, with the command-line renderer of a Release build. Run it only after a
-# change meant to alter pictures, then LOOK at every image it wrote (git diff shows which) before
+# scene under scenes/, and the crops of reference/crops/crops.txt, with the command-line renderer
+# of a Release build. Run it only after a change meant to alter pictures, then LOOK at every image it wrote (git diff shows which) before
 # committing them: a reference is only worth what its inspection was.
 # Usage: scripts/update-reference-images.sh [BUILD_DIR]      (default build-release)
 set -euo pipefail
@@ -23,4 +23,14 @@ for scene in features/soft_shadows features/depth_of_field features/glossy showc
     name="${scene//\//__}__spp16"
     "$cli" "$scene.sc" -o "$out/$name.png" --width 160 --height 120 --spp 16 -q
     echo "$out/$name.png"
+done
+# The full-resolution crops listed in crops/crops.txt (ImageMagick's convert cuts them out).
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+grep -v '^#' "$out/crops/crops.txt" | while read -r name scene width height x y w h; do
+    [[ -n "$name" ]] || continue
+    full="$tmp/${scene%.sc}_${width}x${height}.png"
+    [[ -f "$full" ]] || "$cli" "$scene" -o "$full" --width "$width" --height "$height" -q
+    convert "$full" -crop "${w}x${h}+${x}+${y}" +repage "$out/crops/$name.png"
+    echo "$out/crops/$name.png"
 done

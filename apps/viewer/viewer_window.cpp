@@ -593,6 +593,8 @@ void ViewerWindow::watch() {
             render(true);
         }
     }
+    ++watch_ticks_;
+    rewrite_ready_file_soon();  // a test waits for ticks to know the file was (or would have been) checked
     Fl::repeat_timeout(1.0, watch_cb, this);
 }
 
@@ -710,7 +712,8 @@ void ViewerWindow::write_ready_file() {
             << "window " << x() << " " << y() << " " << w() << " " << h() << "\n"
             << "area " << x() + scroll_->x() << " " << y() + scroll_->y() << " " << scroll_->w() << " "
             << scroll_->h() << "\n"
-            << "image " << x() + vis.x << " " << y() + vis.y << " " << vis.w << " " << vis.h << "\n";
+            << "image " << x() + vis.x << " " << y() + vis.y << " " << vis.w << " " << vis.h << "\n"
+            << "watch_ticks " << watch_ticks_ << "\n";
         for (const Tool& t : tools_) {
             const Fl_Widget* tw = t.widget;
             out << "tool " << t.id << " " << x() + tw->x() - t.label_w << " " << y() + tw->y() << " "

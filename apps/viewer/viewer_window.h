@@ -105,6 +105,7 @@ private:
 
     std::string scene_;
     std::string watched_stamp_;
+    int watch_ticks_ = 0;  // times the watch timer has fired (and, with --watch, checked the file)
     std::uint64_t image_version_ = 0;
     std::uint64_t shown_diagnostics_job_ = ~0ull, asked_textures_job_ = 0, first_job_ = 0, ended_job_ = 0;
     int area_w_ = 0, area_h_ = 0;  // the image area's size at the last layout

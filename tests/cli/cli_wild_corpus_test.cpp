@@ -8,6 +8,7 @@
 #include "film/image_io.h"
 #include "support/run_process.h"
 #include "support/wild_corpus.h"
+#include "support/needs.h"
 
 namespace whitted {
 namespace {
@@ -16,7 +17,7 @@ namespace fs = std::filesystem;
 
 void render_corpus(bool lenient) {
     const fs::path dir = wild_corpus_dir();
-    if (dir.empty()) GTEST_SKIP() << wild_corpus_missing_reason();
+    WHITTED_NEEDS(test::kSkipSharedTests, dir.empty() ? wild_corpus_missing_reason() : "");
     const auto failures = lenient ? lenient_failures() : strict_failures();
     const std::string out_dir = test::make_temp_dir();
     int index = 0, rendered = 0;

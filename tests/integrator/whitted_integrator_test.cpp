@@ -174,6 +174,26 @@ TEST(WhittedIntegrator, SlabRefractsBySnellsLaw) {
     expect_color(shade(scene, Ray{entry - 3.0f * dir, dir}), {0, 1, 0});
 }
 
+TEST(WhittedIntegrator, AThickSlabShowsTheRefractionAngleExactly) {
+    // The same 30° entry into glass of ior 1.5 (sin r = 1/3, tan r = 1/√8 = 0.35355), through a
+    // slab 10 thick (z in [-10, 0]): the ray leaves 10 tan r = 3.5355 to the side of its entry and
+    // goes on parallel to where it came from. A target of radius 0.02 there is hit only if r is
+    // right to within about 0.1°: through 1 unit of glass (the test above) an angle 0.6° off still
+    // hit its target.
+    Material glass;
+    glass.diffuse = glm::vec3(0.0f);
+    glass.transparent = {1, 1, 1};
+    glass.ior = 1.5f;
+    const float i = glm::radians(30.0f);
+    const glm::vec3 dir(std::sin(i), 0, -std::cos(i));
+    const glm::vec3 exit(10.0f / std::sqrt(8.0f), 0, -10);
+    SceneBuilder b;
+    b.add(ShapeKind::Cube, translate_scale({0, 0, -5}, {40, 40, 10}), glass)
+        .add(ShapeKind::Sphere, translate_scale(exit + 2.0f * dir, glm::vec3(0.04f)), test::emitter({0, 1, 0}));
+    Scene scene = b.build();
+    expect_color(shade(scene, Ray{-3.0f * dir, dir}), {0, 1, 0});
+}
+
 TEST(WhittedIntegrator, TotalInternalReflectionSendsOneRayWeightedReflectPlusTransparent) {
     // From inside a glass slab (faces z = ±5) a ray meets z = −5 at 60° from the normal, past the
     // critical angle asin(1/1.5) ≈ 41.8°: one mirror ray with weight reflect + transparent.

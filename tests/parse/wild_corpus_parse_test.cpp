@@ -8,13 +8,14 @@
 
 #include "parse/parser.h"
 #include "support/wild_corpus.h"
+#include "support/needs.h"
 
 namespace whitted {
 namespace {
 
 void check_corpus(bool lenient) {
     const auto dir = wild_corpus_dir();
-    if (dir.empty()) GTEST_SKIP() << wild_corpus_missing_reason();
+    WHITTED_NEEDS(test::kSkipSharedTests, dir.empty() ? wild_corpus_missing_reason() : "");
     const auto failures = lenient ? lenient_failures() : strict_failures();
     const auto files = wild_scene_files(dir);
     ASSERT_FALSE(files.empty()) << "no .sc files under " << dir;
@@ -58,7 +59,7 @@ TEST(ParseWildCorpus, LenientModeLoadsTheExtensions) { check_corpus(true); }
 
 TEST(ParseWildCorpus, LenientModeWarnsForWhatItSkips) {
     const auto dir = wild_corpus_dir();
-    if (dir.empty()) GTEST_SKIP() << wild_corpus_missing_reason();
+    WHITTED_NEEDS(test::kSkipSharedTests, dir.empty() ? wild_corpus_missing_reason() : "");
     ParseOptions lenient;
     lenient.lenient = true;
     const std::pair<std::string, const char*> cases[] = {
@@ -85,7 +86,7 @@ TEST(ParseWildCorpus, LenientModeWarnsForWhatItSkips) {
 TEST(ParseWildCorpus, MissingOpeningBracketsAreFine) {
     // `object cylinder diffuse 1 1 1 ]` without '[': '[' is optional, so the brackets balance.
     const auto dir = wild_corpus_dir();
-    if (dir.empty()) GTEST_SKIP() << wild_corpus_missing_reason();
+    WHITTED_NEEDS(test::kSkipSharedTests, dir.empty() ? wild_corpus_missing_reason() : "");
     const ParseResult r =
         parse_scene_file((dir / kIndex / "idx22671205228_disk_missing_brackets.sc").string());
     ASSERT_TRUE(r.ok());
@@ -97,7 +98,7 @@ TEST(ParseWildCorpus, MissingOpeningBracketsAreFine) {
 
 TEST(ParseWildCorpus, TrailingCommasAreWarnings) {
     const auto dir = wild_corpus_dir();
-    if (dir.empty()) GTEST_SKIP() << wild_corpus_missing_reason();
+    WHITTED_NEEDS(test::kSkipSharedTests, dir.empty() ? wild_corpus_missing_reason() : "");
     const ParseResult r = parse_scene_file((dir / kCitelao / "foostable.sc").string());
     ASSERT_TRUE(r.ok());
     ASSERT_FALSE(r.diagnostics.empty());

@@ -1,6 +1,7 @@
 #pragma once
 // Where the wild scene corpus lives (shared/scenes/wild): $WHITTED_SHARED_DIR/scenes/wild, else
-// <source dir>/../shared/scenes/wild. Empty path when absent (tests then skip, saying why).
+// <source dir>/../shared/scenes/wild. Empty path when absent (tests then fail,
+// unless WHITTED_SKIP_SHARED_TESTS says why they may skip: support/needs.h).
 #include <algorithm>
 #include <map>
 #include <cstdlib>

@@ -8,6 +8,7 @@
 
 #include "film/image_io.h"
 #include "support/run_process.h"
+#include "support/needs.h"
 #include "texture/texture_test_support.h"
 
 namespace whitted {
@@ -193,9 +194,11 @@ TEST_F(TextureScene, CliTexturePath) {
 // parent directory, with no option, from any current directory.
 TEST_F(TextureScene, CliWildScenesFindTheirTextures) {
     const std::string shared = shared_dir();
-    if (shared.empty()) GTEST_SKIP() << "the shared scene corpus (../shared/scenes/wild) is not here";
+    WHITTED_NEEDS(test::kSkipSharedTests,
+                  shared.empty() ? "the shared folder is not here: set WHITTED_SHARED_DIR or place it at <source>/../shared"
+                                 : "");
     const std::string dir = shared + "/scenes/wild/citelao__cse452-computer-graphics/data/scenes";
-    if (!fs::is_directory(dir)) GTEST_SKIP() << dir << " is not here";
+    ASSERT_TRUE(fs::is_directory(dir)) << dir << " is not in the shared corpus";
     ScopedCwd in(dir_);
     for (const char* name : {"test_texture.sc", "go_board.sc", "test_refraction.sc"}) {
         SCOPED_TRACE(name);

@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -20,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include "film/image_io.h"
+#include "support/needs.h"
 #include "support/run_process.h"
 
 namespace whitted {
@@ -35,6 +37,15 @@ std::string find_on_path(const std::string& name) {
     for (std::string dir; std::getline(dirs, dir, ':');)
         if (!dir.empty() && access((dir + "/" + name).c_str(), X_OK) == 0) return dir + "/" + name;
     return "";
+}
+
+// "" when every tool is on the PATH, else which are missing and where they come from.
+std::string missing_tools(std::initializer_list<const char*> tools) {
+    std::string missing;
+    for (const char* tool : tools)
+        if (find_on_path(tool).empty()) missing += std::string(missing.empty() ? "" : ", ") + tool;
+    return missing.empty() ? "" : "the screen test needs " + missing +
+                                      " (Debian xdotool, x11-apps, imagemagick, tesseract-ocr: scripts/install-deps.sh --viewer-test)";
 }
 
 // A child process with its output in a log file; killed (SIGTERM, then SIGKILL) when destroyed.
@@ -74,6 +85,10 @@ struct Child {
             std::this_thread::sleep_for(20ms);
         }
         return -1;
+    }
+    // Sends `sig` if it still runs (never to pid -1, which would mean every process).
+    void signal(int sig) const {
+        if (pid > 0) kill(pid, sig);
     }
     std::string output() const {
         std::ifstream in(log);
@@ -223,6 +238,7 @@ struct Box {
 struct Ready {
     std::uint64_t job = 0;  // the render reported
     bool reused = false;    // it reused the scene loaded before (the file had not changed)
+    int watch_ticks = 0;    // times its once-a-second watch timer has fired
     std::string state;
     Box window, area, image;  // the area is where the image is shown
     std::vector<std::pair<std::string, Box>> tools;  // left to right as made; x and w include the label
@@ -244,6 +260,7 @@ Ready read_ready(const std::string& path) {
             ls >> r.job >> word;
             r.reused = word == "reused";
         } else if (key == "state") ls >> r.state;
+        else if (key == "watch_ticks") ls >> r.watch_ticks;
         else if (key == "window") ls >> r.window.x >> r.window.y >> r.window.w >> r.window.h;
         else if (key == "area") ls >> r.area.x >> r.area.y >> r.area.w >> r.area.h;
         else if (key == "image") ls >> r.image.x >> r.image.y >> r.image.w >> r.image.h;
@@ -296,10 +313,9 @@ std::pair<int, int> find_subimage(const Image& whole, const Image& part, std::pa
 TEST_F(ViewerE2E, TheWindowShowsTheSameImageAsTheCommandLineRenderer) {
     Xvfb x;
     std::string why;
-    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xwd", "convert"}));
     const std::string xwd = find_on_path("xwd"), convert = find_on_path("convert");
-    if (xwd.empty() || convert.empty())
-        GTEST_SKIP() << "viewer screen test skipped: needs xwd (x11-apps) and convert (imagemagick)";
 
     const int W = 320, H = 240;
     auto cli = run_process({test::cli_path(), scene_, "-o", dir_ + "/cli.png", "--width", std::to_string(W),
@@ -343,14 +359,14 @@ TEST_F(ViewerE2E, TheWindowShowsTheSameImageAsTheCommandLineRenderer) {
     EXPECT_LE(fx + W, wx + ww);
 
     // Ctrl-C / SIGTERM closes the window cleanly.
-    kill(viewer.pid, SIGTERM);
+    viewer.signal(SIGTERM);
     EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
 }
 
 TEST_F(ViewerE2E, ScreenshotFlagSavesTheDisplayedPixels) {
     Xvfb x;
     std::string why;
-    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
     auto cli = run_process({test::cli_path(), scene_, "-o", dir_ + "/cli.png", "--width", "200", "--height", "150",
                             "--mode", "normals", "-q"});
     ASSERT_EQ(cli.exit_code, 0) << cli.output;
@@ -369,7 +385,7 @@ TEST_F(ViewerE2E, ScreenshotFlagSavesTheDisplayedPixels) {
 TEST_F(ViewerE2E, ASceneWithErrorsIsReportedNotACrash) {
     Xvfb x;
     std::string why;
-    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
     std::ofstream(scene_) << "camera [ eye 0 0 5 ]\nmastersubgraph root [ trans [ object blob [ ] ] ]\n";
     const std::string ready = dir_ + "/ready.txt";
     Child viewer({WHITTED_VIEWER_PATH, scene_, "--exit-when-done", "--ready-file", ready}, dir_ + "/viewer.log",
@@ -420,11 +436,69 @@ Image grab_screen(const std::string& display, const std::string& png) {
     return screen;
 }
 
+// The text the screen grab `png` shows inside `box`, read by OCR (tesseract, on the region scaled
+// up 4× in grey: FLTK's small UI font is then read reliably). `lines`: one line, or a block.
+// For checks of what the user reads, where the ready file only says what the viewer meant to show.
+enum class Lines { One, Block };
+std::string screen_text(const std::string& png, const Box& box, Lines lines) {
+    const std::string region = png + "." + std::to_string(box.x) + "_" + std::to_string(box.y) + ".png";
+    auto r = run_process({"/bin/sh", "-c",
+                          "'" + find_on_path("convert") + "' '" + png + "' -crop " + std::to_string(box.w) + "x" +
+                              std::to_string(box.h) + "+" + std::to_string(box.x) + "+" + std::to_string(box.y) +
+                              " +repage -resize 400% -colorspace Gray '" + region + "' && '" +
+                              find_on_path("tesseract") + "' '" + region + "' - --psm " +
+                              (lines == Lines::One ? "7" : "6") + " 2>/dev/null"});
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return r.output;
+}
+
+// `text` without quotation marks, straight or curly (OCR reads ' as ‘ or ’, or doubles it):
+// compare what OCR read with what was meant with both unquoted.
+std::string unquoted(std::string text) {
+    for (const char* q : {"\u2018", "\u2019", "\u201C", "\u201D", "'", "\""})
+        for (std::size_t i; (i = text.find(q)) != std::string::npos;) text.erase(i, std::strlen(q));
+    return text;
+}
+// Whether OCR output `read` contains `meant`, quotation marks aside.
+bool reads(const std::string& read, const std::string& meant) {
+    return unquoted(read).find(unquoted(meant)) != std::string::npos;
+}
+
 // xdotool on our X server; returns the first line of its output (e.g. a window id).
 std::string xdotool(const std::string& display, const std::string& args) {
     auto r = run_process({"/bin/sh", "-c", "DISPLAY=" + display + " '" + find_on_path("xdotool") + "' " + args});
     EXPECT_EQ(r.exit_code, 0) << "xdotool " << args << ":\n" << r.output;
     return r.output.substr(0, r.output.find('\n'));
+}
+
+// The error of ASceneWithErrorsIsReportedNotACrash as the user reads it on the screen.
+TEST_F(ViewerE2E, ASceneWithErrorsShowsTheErrorOnTheScreen) {
+    Xvfb x;
+    std::string why;
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xwd", "convert", "tesseract"}));
+    std::ofstream(scene_) << "camera [ eye 0 0 5 ]\nmastersubgraph root [ trans [ object blob [ ] ] ]\n";
+    const std::string ready = dir_ + "/ready.txt";
+    Child viewer({WHITTED_VIEWER_PATH, scene_, "--ready-file", ready}, dir_ + "/viewer.log",
+                 {{"DISPLAY", x.display()}, {"ASAN_OPTIONS", asan_options_for_viewer()}});
+    Ready r;
+    ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready& n) { return n.state == "failed"; }, 60s))
+        << viewer.output();
+    const std::string png = dir_ + "/screen.png";
+    grab_screen(x.display(), png);
+    // In the status bar: the error (after the scene's folder, which OCR need not spell) and the
+    // state; in the messages panel: the error.
+    const std::string message = screen_text(png, r.fields["message"], Lines::One);
+    EXPECT_TRUE(reads(message, "scene.sc:2:")) << message << " (see " << png << ")";
+    EXPECT_TRUE(reads(message, "error: unknown object type 'blob'")) << message << " (see " << png << ")";
+    const std::string progress = screen_text(png, r.fields["progress"], Lines::One);
+    EXPECT_TRUE(reads(progress, "the scene has errors")) << progress << " (see " << png << ")";
+    const Box panel{r.window.x, r.area.y + r.area.h, r.window.w, r.fields["scene"].y - (r.area.y + r.area.h)};
+    const std::string panel_text = screen_text(png, panel, Lines::Block);
+    EXPECT_TRUE(reads(panel_text, "scene.sc:2:")) << panel_text << " (see " << png << ")";
+    EXPECT_TRUE(reads(panel_text, "error: unknown object type 'blob'")) << panel_text << " (see " << png << ")";
+    viewer.signal(SIGTERM);
+    EXPECT_NE(viewer.wait_exit(10s), -1) << viewer.output();
 }
 
 bool overlap(const Box& a, const Box& b) {
@@ -434,10 +508,8 @@ bool overlap(const Box& a, const Box& b) {
 TEST_F(ViewerE2E, TheToolBarKeepsItsLayoutWhenTheWindowIsResized) {
     Xvfb x;
     std::string why;
-    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
-    for (const char* tool : {"xdotool", "xwd", "convert"})
-        if (find_on_path(tool).empty())
-            GTEST_SKIP() << "viewer screen test skipped: needs xdotool, xwd (x11-apps) and convert (imagemagick)";
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xdotool", "xwd", "convert"}));
 
     const std::string ready = dir_ + "/ready.txt";
     Child viewer({WHITTED_VIEWER_PATH, scene_, "--width", "160", "--height", "120", "--threads", "2", "--ready-file",
@@ -507,7 +579,7 @@ TEST_F(ViewerE2E, TheToolBarKeepsItsLayoutWhenTheWindowIsResized) {
         EXPECT_EQ(scene.y + scene.h, r.window.y + r.window.h);
         EXPECT_GE(progress.w, r.needs["progress"]);
     }
-    kill(viewer.pid, SIGTERM);
+    viewer.signal(SIGTERM);
     EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
 }
 
@@ -516,8 +588,8 @@ TEST_F(ViewerE2E, TheToolBarKeepsItsLayoutWhenTheWindowIsResized) {
 TEST_F(ViewerE2E, SaveImageAsStartsInTheScenesFolder) {
     Xvfb x;
     std::string why;
-    if (!x.start(dir_, why)) GTEST_SKIP() << "viewer screen test skipped: " << why;
-    if (find_on_path("xdotool").empty()) GTEST_SKIP() << "viewer screen test skipped: needs xdotool";
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xdotool"}));
     fs::create_directory(dir_ + "/scenes");
     const std::string scene = dir_ + "/scenes/room.sc", ready = dir_ + "/ready.txt";
     fs::copy_file(scene_, scene);
@@ -551,7 +623,7 @@ TEST_F(ViewerE2E, SaveImageAsStartsInTheScenesFolder) {
     ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready& n) { return !n.panel.empty(); }, 20s))
         << viewer.output();
     EXPECT_EQ(r.panel, std::vector<std::string>{error});
-    kill(viewer.pid, SIGTERM);
+    viewer.signal(SIGTERM);
     EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
 }
 
@@ -594,10 +666,8 @@ protected:
     void SetUp() override {
         ViewerE2E::SetUp();
         ready_ = dir_ + "/ready.txt";
-        if (!x_.start(dir_, why_)) GTEST_SKIP() << "viewer screen test skipped: " << why_;
-        for (const char* tool : {"xwd", "convert"})
-            if (find_on_path(tool).empty())
-                GTEST_SKIP() << "viewer screen test skipped: needs xwd (x11-apps) and convert (imagemagick)";
+        WHITTED_NEEDS(test::kSkipViewerTests, x_.start(dir_, why_) ? "" : "no X server for the screen test: " + why_);
+        WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xwd", "convert"}));
         std::ofstream(scene_) << sphere_scene("0.9 0.1 0.1");
         red_ = cli_image(scene_, kW, kH, dir_ + "/red.png");
         std::ofstream(dir_ + "/blue.sc") << sphere_scene("0.1 0.1 0.9");
@@ -649,23 +719,27 @@ TEST_F(ViewerOnScreen, AChangedSceneIsReloadedAndShown) {
     EXPECT_FALSE(again.reused) << "the changed file must be loaded again";
     EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen2.png"), blue_, again.image))
         << "the blue sphere is not on the screen (see " << dir_ << "/screen2.png)";
-    kill(viewer->pid, SIGTERM);
+    viewer->signal(SIGTERM);
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
 // Without --watch a saved change is not picked up (until File > Reload, Ctrl+R).
 TEST_F(ViewerOnScreen, WithoutWatchAChangedSceneIsNotReloaded) {
-    if (find_on_path("xdotool").empty()) GTEST_SKIP() << "viewer screen test skipped: needs xdotool";
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xdotool"}));
     auto viewer = start_viewer({});
     Ready first;
     ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
         << viewer->output();
 
+    Ready before;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, before, [](const Ready&) { return true; }, 5s)) << viewer->output();
     rewrite_scene(scene_, sphere_scene("0.1 0.1 0.9"));
-    // Nothing to wait for: give the viewer time for several checks of the file (one a second).
-    std::this_thread::sleep_for(2500ms);
+    // Three ticks of the viewer's watch timer: with --watch, the change would have been seen at
+    // the first and its render reported by the third.
     Ready later;
-    ASSERT_TRUE(wait_for_ready(*viewer, ready_, later, [](const Ready&) { return true; }, 5s)) << viewer->output();
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, later,
+                               [&](const Ready& n) { return n.watch_ticks >= before.watch_ticks + 3; }, 30s))
+        << viewer->output();
     EXPECT_EQ(later.job, first.job) << "the scene was rendered again without --watch";
     EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen1.png"), red_, later.image))
         << "the red sphere is no longer on the screen (see " << dir_ << "/screen1.png)";
@@ -678,14 +752,14 @@ TEST_F(ViewerOnScreen, WithoutWatchAChangedSceneIsNotReloaded) {
         << viewer->output();
     EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen2.png"), blue_, later.image))
         << "the blue sphere is not on the screen after Reload (see " << dir_ << "/screen2.png)";
-    kill(viewer->pid, SIGTERM);
+    viewer->signal(SIGTERM);
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
 // Fit window: once a resize has settled the scene is rendered again (without loading it again)
 // at the size of the new image area; resizes in quick succession give one render.
 TEST_F(ViewerOnScreen, FitWindowRendersAgainAtTheNewSizeAfterAResize) {
-    if (find_on_path("xdotool").empty()) GTEST_SKIP() << "viewer screen test skipped: needs xdotool";
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xdotool"}));
     auto viewer = start_viewer({"--fit", "--window-size", "640x480"});
     Ready first;
     ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
@@ -714,12 +788,13 @@ TEST_F(ViewerOnScreen, FitWindowRendersAgainAtTheNewSizeAfterAResize) {
     const Image expected = cli_image(scene_, r.area.w, r.area.h, dir_ + "/fitted.png");
     EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen.png"), expected, r.image))
         << "the image at the new size is not on the screen (see " << dir_ << "/screen.png)";
-    kill(viewer->pid, SIGTERM);
+    viewer->signal(SIGTERM);
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
 // Names with '@' (the scene's, a texture's) show as written in the status bar and the panel.
 TEST_F(ViewerOnScreen, NamesWithAnAtSignShowAsWritten) {
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"tesseract"}));
     scene_ = dir_ + "/a@b.sc";
     std::ofstream(scene_) << sphere_scene("1 1 1", "t@x.png");
     auto viewer = start_viewer({"--missing-textures", "checker"});
@@ -735,7 +810,21 @@ TEST_F(ViewerOnScreen, NamesWithAnAtSignShowAsWritten) {
     ASSERT_FALSE(r.panel.empty());
     EXPECT_EQ(r.panel[0].rfind(warning, 0), 0u) << r.panel[0];
     EXPECT_NE(r.panel[0].find(texture), std::string::npos) << r.panel[0];
-    kill(viewer->pid, SIGTERM);
+
+    // What the user reads on the screen: the names with their '@', in the status bar and the
+    // messages panel (between the image area and the status bar).
+    const std::string png = dir_ + "/screen.png";
+    grab_screen(x_.display(), png);
+    const std::string scene_field = screen_text(png, r.fields["scene"], Lines::One);
+    EXPECT_TRUE(reads(scene_field, "a@b.sc: 1 objects")) << scene_field << " (see " << png << ")";
+    const std::string message_field = screen_text(png, r.fields["message"], Lines::One);
+    EXPECT_TRUE(reads(message_field, "a@b.sc:4:")) << message_field << " (see " << png << ")";
+    EXPECT_TRUE(reads(message_field, "warning: texture 't@x.png'")) << message_field << " (see " << png << ")";
+    const Box panel{r.window.x, r.area.y + r.area.h, r.window.w, r.fields["scene"].y - (r.area.y + r.area.h)};
+    const std::string panel_text = screen_text(png, panel, Lines::Block);
+    EXPECT_TRUE(reads(panel_text, "a@b.sc:4:")) << panel_text << " (see " << png << ")";
+    EXPECT_TRUE(reads(panel_text, texture)) << panel_text << " (see " << png << ")";
+    viewer->signal(SIGTERM);
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
@@ -799,7 +888,7 @@ bool shows_a_dialog(const Image& screen, const Box& box) {
 // A texture that is not found: the viewer asks for its file in a dialog; Cancel draws it as the
 // magenta/black checkerboard, with a warning naming it; the viewer then quits cleanly.
 TEST_F(ViewerOnScreen, CancellingTheMissingTextureDialogDrawsACheckerboard) {
-    if (find_on_path("xdotool").empty()) GTEST_SKIP() << "viewer screen test skipped: needs xdotool";
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xdotool"}));
     std::ofstream(scene_) << sphere_scene("1 1 1", "nowhere.png");
     auto viewer = start_viewer({"--mode", "raycast"});  // unlit: the texture's own colours
 
