@@ -44,6 +44,7 @@ Material to_material(const MaterialDesc& m) {
     out.emit = m.emit;
     out.shine = m.shine;
     out.ior = m.ior;
+    if (m.blend) out.blend = *m.blend;
     if (m.texture) {
         out.repeat_u = m.texture->repeat_u;
         out.repeat_v = m.texture->repeat_v;
