@@ -183,6 +183,9 @@ TEST_F(TextureLoader, FirstPlaceInTheOrderWins) {
         ASSERT_EQ(r->missing.size(), 1u);
         std::vector<std::string> all;
         for (const auto& [path, colour] : places) all.push_back(path);
+        // A Windows path (`tex\t.png`) also tries its trailing parts (§9.4), after all of these.
+        if (is_windows_path(name))
+            for (const auto& c : loose_texture_candidates(name, scene, options.search_dirs)) all.push_back(c);
         EXPECT_EQ(r->missing[0].tried, all);
         for (const auto& [path, colour] : places) fs::rename(path + ".hidden", path);
     }
