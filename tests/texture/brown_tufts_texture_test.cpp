@@ -14,13 +14,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace whitted::test;
 
-Picture solid(glm::u8vec3 c) {
-    Picture p(4, 4);
-    for (int y = 0; y < 4; ++y)
-        for (int x = 0; x < 4; ++x) p.set(x, y, c);
-    return p;
-}
-
 using BrownTuftsTexture = PrivateTextureDirs;
 
 // A wall facing the camera, lit head-on by a white directional light: N·L = 1, no ambient (the

@@ -18,13 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace whitted::test;
 
-Picture solid(glm::u8vec3 c) {
-    Picture p(4, 4);
-    for (int y = 0; y < 4; ++y)
-        for (int x = 0; x < 4; ++x) p.set(x, y, c);
-    return p;
-}
-
 // Line 4, column 7 holds the `texture` keyword; so does line 7, column 21.
 const char* kTwoObjects =
     "camera [ eye 0 0 4 ]\n"                                    // 1

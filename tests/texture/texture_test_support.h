@@ -63,6 +63,14 @@ inline Picture distinct_picture(int w = 5, int h = 3) {
     return p;
 }
 
+// A 4 × 4 picture of one colour.
+inline Picture solid(glm::u8vec3 c) {
+    Picture p(4, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) p.set(x, y, c);
+    return p;
+}
+
 inline bool write_png(const std::string& path, const Picture& p) {
     return stbi_write_png(path.c_str(), p.width, p.height, 3, p.rgb.data(), p.width * 3) != 0;
 }
