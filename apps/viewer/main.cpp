@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
     app.add_option("--missing-textures", missing, "A texture that cannot be found: ask for the file, or draw a checkerboard")
         ->check(CLI::IsMember({"ask", "checker"}));
     app.add_flag("--lenient", o.lenient, "Skip unknown keywords and object types with a warning");
-    app.add_option("--time", o.time, "Scene time t of 'velocity' and 'angularrate' (the Time box; 0 = the still image)")
+    app.add_option("--time", o.time, "Scene time t of 'velocity' and 'angularrate' (also Render ▸ Scene time; 0 = the still image)")
         ->check(CLI::Validator(
             [](std::string& s) { return std::isfinite(std::strtof(s.c_str(), nullptr)) ? "" : "not a finite number: " + s; },
             "FINITE"));
