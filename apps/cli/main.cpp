@@ -61,7 +61,7 @@ int run(int argc, char** argv) {
                "130 interrupted (the part rendered so far is written).");
     std::string scene_path, output, mode_name = "whitted", missing = "error";
     int width = 640, height = 480, max_depth = 5, aa = 1, spp = 1, threads = 0;
-    float aa_threshold = 0.0f;
+    float aa_threshold = 0.0f, time = 0.0f;
     bool lenient = false, quiet = false, stats = false;
     std::vector<std::string> texture_dirs;
     app.add_option("scene", scene_path, "Scene file (.sc); without one, renders the bundled showcase");
@@ -93,6 +93,10 @@ int run(int argc, char** argv) {
         ->default_str("");
     app.add_option("--missing-textures", missing, "What to do with a texture that cannot be loaded")
         ->check(CLI::IsMember({"error", "checker"}));
+    app.add_option("--time", time,
+                   "Scene time t: 'velocity x y z' moves by t·(x, y, z), 'angularrate ax ay az r' turns by r·t "
+                   "degrees (0 = the still image)")
+        ->check(finite_number);
     app.add_flag("--lenient", lenient, "Skip unknown keywords and object types with a warning instead of failing");
     app.add_flag("-q,--quiet", quiet, "No progress line");
     app.add_flag("--stats", stats, "Print timings and ray counts");
@@ -129,6 +133,7 @@ int run(int argc, char** argv) {
     LoadOptions load_options;
     load_options.cancel = &cli::interrupt_flag();
     load_options.lenient = lenient;
+    load_options.time = time;
     load_options.threads = threads;  // --threads 1 means one thread for the build too
     load_options.textures.search_dirs = texture_dirs;
     load_options.textures.missing = missing == "checker" ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
@@ -175,12 +180,13 @@ int run(int argc, char** argv) {
     if (stats) {
         const auto& ls = loaded.stats;
         std::fprintf(stderr,
+                     "dialect %s\n"
                      "objects %zu, lights %zu, textures %zu; %d samples per pixel\n"
                      "parse %.3fs, flatten %.3fs, textures %.3fs, build %.3fs, render %.3fs (%d threads)\n"
                      "rays: camera %llu, reflected %llu, refracted %llu, shadow %llu; %.2f Mrays/s\n"
                      "samples rejected (not finite, counted as black): %llu\n",
-                     ls.objects, ls.lights, ls.textures, job.sampling.samples_per_pixel(), ls.parse_seconds,
-                     ls.flatten_seconds, ls.texture_seconds, ls.build_seconds, rs.seconds, rs.threads,
+                     dialect_name(ls.dialect), ls.objects, ls.lights, ls.textures, job.sampling.samples_per_pixel(),
+                     ls.parse_seconds, ls.flatten_seconds, ls.texture_seconds, ls.build_seconds, rs.seconds, rs.threads,
                      (unsigned long long)rs.rays.camera, (unsigned long long)rs.rays.reflected,
                      (unsigned long long)rs.rays.refracted, (unsigned long long)rs.rays.shadow,
                      rs.seconds > 0 ? double(rs.rays.total()) / rs.seconds * 1e-6 : 0.0,

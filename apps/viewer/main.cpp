@@ -94,6 +94,10 @@ int main(int argc, char** argv) {
     app.add_option("--missing-textures", missing, "A texture that cannot be found: ask for the file, or draw a checkerboard")
         ->check(CLI::IsMember({"ask", "checker"}));
     app.add_flag("--lenient", o.lenient, "Skip unknown keywords and object types with a warning");
+    app.add_option("--time", o.time, "Scene time t of 'velocity' and 'angularrate' (also Render ▸ Scene time; 0 = the still image)")
+        ->check(CLI::Validator(
+            [](std::string& s) { return std::isfinite(std::strtof(s.c_str(), nullptr)) ? "" : "not a finite number: " + s; },
+            "FINITE"));
     app.add_option("--window-size", [&o](const CLI::results_t& r) {
         return std::sscanf(r[0].c_str(), "%dx%d", &o.window_width, &o.window_height) == 2 && o.window_width > 0 &&
                o.window_height > 0;

@@ -4,11 +4,13 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <thread>
 
+#include <FL/fl_ask.H>
 #include <FL/Fl.H>
 #include <FL/Fl_Box.H>
 #include <FL/Fl_Browser.H>
@@ -157,6 +159,7 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     menu_->add("&File/&Quit", FL_CTRL + 'q', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->quit(); }, this);
     menu_->add("&Render/&Render", FL_F + 5, [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->render(); }, this);
     menu_->add("&Render/&Stop", FL_Escape, [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->stop(); }, this);
+    menu_->add("&Render/Scene &time...", FL_CTRL + 't', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->ask_time(); }, this);
 
     // Tool bar: the render controls. Changing one and pressing Render uses it.
     // Made at their final sizes; layout() places them left to right.
@@ -327,9 +330,27 @@ void ViewerWindow::layout_status() {
 
 // ---------------------------------------------------------------------------------------------
 
+// Scene time t of `velocity` / `angularrate` (scene-format.md §9.4): asked for, then rendered.
+void ViewerWindow::ask_time() {
+    char current[32];
+    std::snprintf(current, sizeof current, "%g", double(options_.time));
+    const char* answer = fl_input("Scene time t ('velocity' moves by t times its vector, 'angularrate' turns by "
+                                  "t times its rate; 0 is the still image):", current);
+    if (!answer) return;
+    char* end = nullptr;
+    const float t = std::strtof(answer, &end);
+    if (end == answer || !std::isfinite(t)) {
+        fl_alert("Not a finite number: %s", answer);
+        return;
+    }
+    options_.time = t;
+    render();
+}
+
 LoadOptions ViewerWindow::load_options() const {
     LoadOptions o;
     o.lenient = options_.lenient;
+    o.time = options_.time;
     o.threads = int(threads_->value());  // the BVH build uses the same threads as the render
     o.textures.search_dirs = options_.texture_dirs;
     // The answers the user gave for this scene's missing textures (a file, or Cancel).
@@ -474,7 +495,8 @@ void ViewerWindow::update_status(const RenderStatus& st) {
     if (st.load_stats.objects || st.load_stats.lights || st.state == RenderState::Rendering ||
         st.state == RenderState::Finished)
         stats = ": " + std::to_string(st.load_stats.objects) + " objects, " + std::to_string(st.load_stats.lights) +
-                (st.load_stats.lights == 1 ? " light" : " lights");
+                (st.load_stats.lights == 1 ? " light" : " lights") + " (" + dialect_name(st.load_stats.dialect) +
+                ")";
 
     char buf[200];
     const int pct = st.tiles_total ? int(100.0 * st.tiles_done / st.tiles_total) : 0;

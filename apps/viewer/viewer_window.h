@@ -29,6 +29,7 @@ struct ViewerOptions {
     bool fit_window = false;                 // image size follows the image area
     bool watch = false;                      // reload when the scene file changes on disk
     bool lenient = false;
+    float time = 0;                          // scene time of velocity/angularrate (scene-format.md §9.4)
     bool checker_textures = false;           // never ask: draw missing textures as a checkerboard
     std::vector<std::string> texture_dirs;
     int window_width = 1000, window_height = 760;
@@ -47,6 +48,7 @@ public:
     void open_scene(const std::string& path);  // and render it
     void render(bool force_reload = false);
     void stop();
+    void ask_time();  // Render ▸ Scene time: asks for t, then renders
     void quit();
     int exit_code() const { return exit_code_; }
     bool quitting() const { return quitting_; }

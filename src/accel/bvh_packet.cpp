@@ -258,6 +258,7 @@ inline void offer_instance(const Instance& inst, std::uint32_t index, const Ray 
             case ShapeKind::Sphere: offer4(packet_shapes::sphere4(o, d, int(lanes)), index, g, lanes, tmin, tmax, nearest); break;
             case ShapeKind::Cube: offer4(packet_shapes::cube4(o, d), index, g, lanes, tmin, tmax, nearest); break;
             case ShapeKind::Cylinder: offer4(packet_shapes::cylinder4(o, d), index, g, lanes, tmin, tmax, nearest); break;
+            case ShapeKind::Ellipsoid: offer4(packet_shapes::ellipsoid4(o, d, int(lanes)), index, g, lanes, tmin, tmax, nearest); break;
             case ShapeKind::Cone: break;
         }
     }

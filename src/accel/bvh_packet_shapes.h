@@ -106,6 +106,14 @@ inline Span4 sphere4(const __m128 (&o)[3], const __m128 (&d)[3], int lanes) {
     return s;
 }
 
+// shape_math::intersect_ellipsoid: the sphere on the halved x and z lanes (halving is exact).
+inline Span4 ellipsoid4(const __m128 (&o)[3], const __m128 (&d)[3], int lanes) {
+    const __m128 half = _mm_set1_ps(0.5f);
+    const __m128 so[3] = {_mm_mul_ps(o[0], half), o[1], _mm_mul_ps(o[2], half)};
+    const __m128 sd[3] = {_mm_mul_ps(d[0], half), d[1], _mm_mul_ps(d[2], half)};
+    return sphere4(so, sd, lanes);
+}
+
 // shape_math::intersect_cube.
 inline Span4 cube4(const __m128 (&o)[3], const __m128 (&d)[3]) {
     Span4 s;

@@ -45,6 +45,7 @@ Material to_material(const MaterialDesc& m) {
     out.shine = m.shine;
     out.ior = m.ior;
     out.gloss = m.gloss;
+    if (m.blend) out.blend = *m.blend;
     if (m.texture) {
         out.repeat_u = m.texture->repeat_u;
         out.repeat_v = m.texture->repeat_v;

@@ -46,6 +46,9 @@ PathLights::PathLights(const Scene& scene) : scene_(scene) {
     for (std::uint32_t i = 0; i < flat.instances.size(); ++i) {
         const glm::vec3& e = scene.material(i).emit;
         if (std::max(e.x, std::max(e.y, e.z)) <= 0.0f) continue;
+        // A shape without an area sampler (the ellipsoid) still lights the scene: BSDF sampling
+        // finds it, with its full weight, since next-event estimation never picks it.
+        if (unit_shape_area(flat.instances[i].kind) <= 0.0f) continue;
         lights_.push_back({std::int32_t(i), -1});
         power.push_back(std::max(1e-12f, luminance(e) * world_area(flat.instances[i]) * kPi));
     }

@@ -12,8 +12,8 @@ struct Surface {
     glm::vec3 object_normal;  // the unit shape's outward normal there, in object space
     glm::vec2 uv;         // texture coordinates of the unit shape (spec §8)
     const Material* material;
-    glm::vec3 diffuse;    // material diffuse × texel
-    glm::vec3 ambient;    // material ambient × texel
+    glm::vec3 diffuse;    // material diffuse × texel (or blended with it, §9.4)
+    glm::vec3 ambient;    // material ambient × texel (as is under blend)
 };
 
 Surface surface_at(const Scene& scene, const Ray& ray, const Hit& hit);

@@ -13,11 +13,15 @@ struct ParseOptions {
     // Skip unknown keywords (with the numbers or bracketed block that follow) and unknown
     // object types (with their block), each with a warning, instead of failing.
     bool lenient = false;
+    // The scene time t of `velocity` and `angularrate` (scene-format.md §9.4): 0 is the still image.
+    float time = 0;
 };
 
 struct ParseResult {
     SceneDescription scene;            // meaningful only when ok()
-    std::vector<Diagnostic> diagnostics;  // warnings and errors in file order
+    // Warnings and errors ordered by position (the parser recovers after an error and goes on:
+    // every problem of the file, up to a limit, then one error giving the count of the rest).
+    std::vector<Diagnostic> diagnostics;
     bool unreadable = false;              // the file itself could not be read (an I/O failure)
     bool ok() const { return !has_errors(diagnostics); }
 };

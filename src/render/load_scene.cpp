@@ -19,6 +19,7 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     result.stats.parse_seconds = parse_seconds;
     result.unreadable = parsed.unreadable;
     result.diagnostics = std::move(parsed.diagnostics);
+    result.stats.dialect = parsed.scene.dialect;
     if (has_errors(result.diagnostics) || cancelled()) return result;
 
     auto t = Clock::now();
@@ -50,13 +51,13 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
 
 LoadResult load_scene(const std::string& path, const LoadOptions& options) {
     auto t = Clock::now();
-    ParseResult parsed = parse_scene_file(path, {options.lenient});
+    ParseResult parsed = parse_scene_file(path, {options.lenient, options.time});
     return finish(std::move(parsed), options, since(t));
 }
 
 LoadResult load_scene_text(const std::string& text, const std::string& path, const LoadOptions& options) {
     auto t = Clock::now();
-    ParseResult parsed = parse_scene_text(text, path, {options.lenient});
+    ParseResult parsed = parse_scene_text(text, path, {options.lenient, options.time});
     return finish(std::move(parsed), options, since(t));
 }
 

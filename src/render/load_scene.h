@@ -13,6 +13,7 @@ namespace whitted {
 
 struct LoadOptions {
     bool lenient = false;
+    float time = 0;   // scene time t for `velocity` / `angularrate` (scene-format.md §9.4)
     int threads = 0;  // for building the BVH; 0 = all hardware threads
     TextureOptions textures;
     // Set by another thread (or a signal handler) to give up; checked between the load's stages.
@@ -22,6 +23,7 @@ struct LoadOptions {
 struct LoadStats {
     double parse_seconds = 0, flatten_seconds = 0, texture_seconds = 0, build_seconds = 0;
     std::size_t objects = 0, lights = 0, textures = 0;
+    Dialect dialect = Dialect::Labs;  // which family of files the scene is written in (§9.4)
 };
 
 struct LoadResult {

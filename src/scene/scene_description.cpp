@@ -8,8 +8,13 @@ const char* shape_name(ShapeKind kind) {
         case ShapeKind::Cylinder: return "cylinder";
         case ShapeKind::Cone: return "cone";
         case ShapeKind::Sphere: return "sphere";
+        case ShapeKind::Ellipsoid: return "ellipsoid";
     }
     return "?";
+}
+
+const char* dialect_name(Dialect dialect) {
+    return dialect == Dialect::BrownTufts ? "Brown/Tufts" : "SceneView/Ray labs";
 }
 
 SubgraphIndex index_subgraphs(const SceneDescription& scene) {

@@ -14,13 +14,23 @@
 
 namespace whitted {
 
-enum class ShapeKind : unsigned char { Cube = 0, Cylinder = 1, Cone = 2, Sphere = 3 };
+// Ellipsoid: x² + 4y² + z² = 1 (scene-format.md §9.4), the only shape reaching outside the unit cube.
+enum class ShapeKind : unsigned char { Cube = 0, Cylinder = 1, Cone = 2, Sphere = 3, Ellipsoid = 4 };
 const char* shape_name(ShapeKind kind);
+
+// Which family of files the scene was written in (scene-format.md §9.4): the labs' own format
+// (mastersubgraphs) or the Brown/Tufts one (top-level trans blocks, `light [ number N`).
+enum class Dialect : unsigned char { Labs, BrownTufts };
+const char* dialect_name(Dialect dialect);
 
 struct TextureRef {
     std::string file;  // as written in the scene
     float repeat_u = 1, repeat_v = 1;
     SourceLoc loc;  // of the `texture` keyword
+    // Brown/Tufts files name textures by their authors' paths (`C:\Users\...\earth.bmp`,
+    // `image/earth.bmp` beside an earth.ppm): when the usual look-up fails, trailing parts of the
+    // path and other extensions are tried (§9.4). Windows paths get this in every file.
+    bool loose_lookup = false;
 };
 
 struct MaterialDesc {
@@ -30,6 +40,8 @@ struct MaterialDesc {
     float ior = 1.0f;
     float gloss = 0.0f;  // §9.1: cos^gloss lobe for reflect/transparent rays; 0 = ideal directions
     std::optional<TextureRef> texture;
+    // Brown/Tufts `blend b`: diffuse = (1 − b)·diffuse + b·texel instead of diffuse·texel.
+    std::optional<float> blend;
 };
 
 struct CameraDesc {
@@ -94,6 +106,7 @@ struct SceneDescription {
     std::vector<LightDesc> lights;  // blocks holding only `ambient` are not listed
     std::vector<SubgraphDesc> subgraphs;
     int root = -1;  // index of `root` in subgraphs
+    Dialect dialect = Dialect::Labs;
 
     // Index of the mastersubgraph with that name, or -1 (a linear scan: see SubgraphIndex).
     int find_subgraph(const std::string& name) const;

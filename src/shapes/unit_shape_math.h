@@ -97,6 +97,20 @@ inline Span<T> intersect_sphere(const Vec3<T>& o, const Vec3<T>& d) {
     return finish(t0, t1, kPartSide, kPartSide);
 }
 
+// Ellipsoid x² + 4y² + z² = 1: the map (x, y, z) → (x/2, y, z/2) takes it onto the sphere of
+// radius 0.5 and keeps the ray parameter t, so the sphere's exact solution applies. Halving is
+// exact in binary floating point, which keeps the packet version (sphere4 on halved lanes)
+// bit-identical.
+template <class T>
+inline Vec3<T> ellipsoid_to_sphere(const Vec3<T>& v) {
+    return {v.x * T(0.5), v.y, v.z * T(0.5)};
+}
+
+template <class T>
+inline Span<T> intersect_ellipsoid(const Vec3<T>& o, const Vec3<T>& d) {
+    return intersect_sphere(ellipsoid_to_sphere(o), ellipsoid_to_sphere(d));
+}
+
 template <class T>
 inline Span<T> intersect_cylinder(const Vec3<T>& o, const Vec3<T>& d) {
     T tin = -kInf<T>, tout = kInf<T>;
@@ -174,6 +188,7 @@ inline Span<T> intersect(ShapeKind kind, const Vec3<T>& o, const Vec3<T>& d) {
         case ShapeKind::Sphere: return intersect_sphere(o, d);
         case ShapeKind::Cylinder: return intersect_cylinder(o, d);
         case ShapeKind::Cone: return intersect_cone(o, d);
+        case ShapeKind::Ellipsoid: return intersect_ellipsoid(o, d);
     }
     return {};
 }
@@ -190,6 +205,8 @@ inline Vec3<T> normal(ShapeKind kind, ShapePart part, const Vec3<T>& p) {
         case kPartSide: break;
     }
     if (kind == ShapeKind::Sphere) return glm::normalize(p);  // = p / 0.5 on the surface
+    // The gradient of x² + 4y² + z² is 2·(x, 4y, z).
+    if (kind == ShapeKind::Ellipsoid) return glm::normalize(Vec3<T>(p.x, T(4) * p.y, p.z));
     const T r = std::sqrt(p.x * p.x + p.z * p.z);
     // Radial forms stay exact for points slightly off the surface.
     if (kind == ShapeKind::Cylinder) {

@@ -41,7 +41,8 @@ glm::vec2 unit_shape_uv(ShapeKind kind, ShapePart part, const glm::vec3& p) {
     switch (part) {
         case kPartSide:
             u = around_u(p);
-            if (kind == ShapeKind::Sphere) {
+            if (kind == ShapeKind::Sphere || kind == ShapeKind::Ellipsoid) {
+                // The ellipsoid as the sphere it maps onto (x/2, y, z/2): the same formula in y.
                 const float s = std::clamp(2.0f * p.y, -1.0f, 1.0f);
                 v = 0.5f - std::asin(s) * std::numbers::inv_pi_v<float>;
             } else {
@@ -60,6 +61,9 @@ glm::vec2 unit_shape_uv(ShapeKind kind, ShapePart part, const glm::vec3& p) {
 
 Bounds unit_shape_world_bounds(ShapeKind kind, const glm::mat4& m) {
     // glm is column-major: m[col][row]. Row i of the linear part is (m[0][i], m[1][i], m[2][i]).
+    if (kind == ShapeKind::Ellipsoid)  // the sphere of radius 0.5 stretched by (2, 1, 2)
+        return unit_shape_world_bounds(ShapeKind::Sphere, m * glm::mat4(glm::vec4(2, 0, 0, 0), glm::vec4(0, 1, 0, 0),
+                                                                        glm::vec4(0, 0, 2, 0), glm::vec4(0, 0, 0, 1)));
     const glm::vec3 centre(m[3]);
     Bounds b;
     if (kind == ShapeKind::Sphere || kind == ShapeKind::Cylinder) {

@@ -2,6 +2,7 @@
 // The four unit shapes in object space (scene-format.md §4): all inside [-0.5, 0.5]³.
 //   cube: faces at ±0.5; sphere: radius 0.5; cylinder: axis +Y, radius 0.5, capped;
 //   cone: apex (0, 0.5, 0), base disc radius 0.5 at y = -0.5, capped.
+//   ellipsoid (§9.4): x² + 4y² + z² = 1, reaching x, z = ±1.
 // Every shape is convex, so a line meets it in at most one interval [t_in, t_out].
 #include <glm/glm.hpp>
 

@@ -9,6 +9,8 @@
 
 #include <stb/stb_image.h>
 
+#include "texture/ascii_ppm.h"
+
 namespace whitted {
 namespace fs = std::filesystem;
 namespace {
@@ -37,6 +39,13 @@ bool decode(const std::string& path, TextureImage& out, std::string& reason) {
     }
     if (bytes.size() > std::size_t(std::numeric_limits<int>::max())) {
         reason = "cannot decode '" + path + "': the file is too large";
+        return false;
+    }
+    if (is_ascii_ppm(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()))) {
+        std::string why;
+        if (decode_ascii_ppm(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), out, why))
+            return true;
+        reason = "cannot decode '" + path + "': " + why;
         return false;
     }
     int w = 0, h = 0, n = 0;
@@ -113,6 +122,48 @@ std::vector<std::string> texture_candidates(const std::string& name, const std::
     return out;
 }
 
+bool is_windows_path(const std::string& name) {
+    const bool drive = name.size() >= 2 && name[1] == ':' &&
+                       ((name[0] >= 'A' && name[0] <= 'Z') || (name[0] >= 'a' && name[0] <= 'z'));
+    return drive || name.find('\\') != std::string::npos;
+}
+
+std::vector<std::string> loose_texture_candidates(const std::string& name, const std::string& scene_path,
+                                                  const std::vector<std::string>& search_dirs) {
+    std::string portable = name;
+    std::replace(portable.begin(), portable.end(), '\\', '/');
+    std::vector<std::string> parts;
+    for (const auto& p : fs::path(portable).relative_path()) parts.push_back(p.string());
+    const std::vector<std::string> usual = texture_candidates(name, scene_path, search_dirs);
+    std::vector<std::string> places = usual;  // every place, to look beside each for other extensions
+    std::vector<std::string> out;
+    auto add = [&](const std::string& c) {
+        if (std::find(places.begin(), places.end(), c) == places.end()) places.push_back(c);
+        if (std::find(usual.begin(), usual.end(), c) == usual.end() &&
+            std::find(out.begin(), out.end(), c) == out.end())
+            out.push_back(c);
+    };
+    // The trailing parts, longest first; the whole path was the usual look-up.
+    for (std::size_t first = 1; first < parts.size(); ++first) {
+        fs::path tail;
+        for (std::size_t i = first; i < parts.size(); ++i) tail /= parts[i];
+        for (const std::string& c : texture_candidates(tail.string(), scene_path, search_dirs)) add(c);
+    }
+    // The same stem with the extensions of the image files that do exist there.
+    static const char* const kExtensions[] = {".bmp", ".jpeg", ".jpg", ".png", ".ppm", ".tga"};
+    const std::vector<std::string> tried = places;
+    for (const std::string& c : tried) {
+        const fs::path p(c);
+        for (const char* ext : kExtensions) {
+            fs::path other = p;
+            other.replace_extension(ext);
+            std::error_code ec;
+            if (other != p && fs::is_regular_file(other, ec)) add(other.string());
+        }
+    }
+    return out;
+}
+
 std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string& scene_path,
                                           const TextureOptions& options, std::vector<Diagnostic>& diagnostics) {
     std::vector<MissingTexture> missing;
@@ -132,6 +183,8 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
         std::vector<std::string> candidates;
         if (auto o = options.overrides.find(ref.file); o != options.overrides.end()) candidates.push_back(o->second);
         for (auto& c : texture_candidates(ref.file, scene_path, options.search_dirs)) candidates.push_back(c);
+        if (ref.loose_lookup || is_windows_path(ref.file))
+            for (auto& c : loose_texture_candidates(ref.file, scene_path, options.search_dirs)) candidates.push_back(c);
 
         int index = -1;
         std::string reason;  // the first decoder complaint, if a file was found but unreadable

@@ -39,6 +39,18 @@ struct MissingTexture {
 std::vector<std::string> texture_candidates(const std::string& name, const std::string& scene_path,
                                             const std::vector<std::string>& search_dirs);
 
+// True for a name written as a Windows path: a `\` in it, or a drive letter (`C:`).
+bool is_windows_path(const std::string& name);
+
+// Where else to look when every texture_candidates place failed, for a name that is a Windows
+// path or comes from a Brown/Tufts file (scene-format.md §9.4), in order: the trailing parts of
+// the path in the usual places, longest first (`C:\a\image\earth.bmp` → `a/image/earth.bmp`, then
+// `image/earth.bmp`, then `earth.bmp`); then, for every place tried so far in its order, the
+// files beside it with the same stem and another image extension (`image/earth.ppm`), which
+// exist (the others are not listed). Without the places already in `texture_candidates`.
+std::vector<std::string> loose_texture_candidates(const std::string& name, const std::string& scene_path,
+                                                  const std::vector<std::string>& search_dirs);
+
 // Fills flat.textures and each material's texture index. Each file is decoded once however many
 // materials name it. `options.overrides[name]`, when present, is tried before the built-in places.
 // A file that is found but cannot be decoded does not end the search: later places are still

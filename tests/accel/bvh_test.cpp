@@ -131,6 +131,7 @@ TEST(Bvh, FarAwayRaysMatchBruteForceAndHitTheSurface) {
         const float radial = std::sqrt(p.x * p.x + p.z * p.z);
         switch (inst.kind) {
             case ShapeKind::Sphere: EXPECT_NEAR(glm::length(p), 0.5f, 2e-3f) << i; break;
+            case ShapeKind::Ellipsoid: EXPECT_NEAR(p.x * p.x + 4 * p.y * p.y + p.z * p.z, 1.0f, 4e-3f) << i; break;
             case ShapeKind::Cone:
                 if (h.part == kPartSide) {
                     EXPECT_NEAR(radial, 0.5f * (0.5f - p.y), 2e-3f) << i;

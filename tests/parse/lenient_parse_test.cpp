@@ -14,13 +14,13 @@ using parse_test::parsed_ok;
 
 TEST(ParseLenient, UnknownKeywordIsSkippedWithItsNumbers) {
     const auto r =
-        parse("mastersubgraph root [ trans [\n  object cube [ alpha 0.9 diffuse 1 0 0 ] ] ]", true);
+        parse("mastersubgraph root [ trans [\n  object cube [ opacity 0.9 diffuse 1 0 0 ] ] ]", true);
     ASSERT_TRUE(parsed_ok(r));
     ASSERT_EQ(r.diagnostics.size(), 1u);
     EXPECT_EQ(r.diagnostics[0].severity, Severity::Warning);
     EXPECT_EQ(r.diagnostics[0].loc.line, 2);
     EXPECT_EQ(r.diagnostics[0].loc.col, 17);
-    EXPECT_NE(r.diagnostics[0].message.find("'alpha'"), std::string::npos);
+    EXPECT_NE(r.diagnostics[0].message.find("'opacity'"), std::string::npos);
     EXPECT_NE(r.diagnostics[0].message.find("object block"), std::string::npos);
     const auto& obj = r.scene.subgraphs[0].children.at(0).objects.at(0);
     EXPECT_EQ(obj.material.diffuse, glm::vec3(1, 0, 0));  // parsing went on after the skip
@@ -29,9 +29,9 @@ TEST(ParseLenient, UnknownKeywordIsSkippedWithItsNumbers) {
 TEST(ParseLenient, UnknownKeywordsInEveryBlock) {
     const auto r = parse(
         "sky 1 2 3\nbackground [ gradient 1 color 0 0 1 ]\ncamera [ fov 40 angle 30 ]\n"
-        "light [ number 0 color 1 1 1 ]\n"
-        "mastersubgraph root [ comment trans [ shear 0 1 0 0.65 0 velocity 1 2 3 "
-        "angularrate 0 1 0 2 translate 1 0 0 object cube [ ] ] ]",
+        "light [ intensity 0 color 1 1 1 ]\n"
+        "mastersubgraph root [ comment trans [ shear 0 1 0 0.65 0 wobble 1 2 3 "
+        "spin 0 1 0 2 translate 1 0 0 object cube [ ] ] ]",
         true);
     ASSERT_TRUE(parsed_ok(r));
     EXPECT_EQ(count(r, Severity::Warning), 8);
@@ -56,14 +56,14 @@ TEST(ParseLenient, UnknownKeywordWithABracketedBlock) {
 TEST(ParseLenient, UnknownObjectTypeIsSkippedWithItsBlock) {
     const auto r = parse(
         "mastersubgraph root [ trans [\n"
-        "  object ellipsoid [ diffuse 1 0 0 extra [ 1 ] ]\n"
+        "  object teapot [ diffuse 1 0 0 extra [ 1 ] ]\n"
         "  object sphere [ diffuse 0 1 0 ] ] ]",
         true);
     ASSERT_TRUE(parsed_ok(r));
     ASSERT_EQ(r.diagnostics.size(), 1u);
     EXPECT_EQ(r.diagnostics[0].loc.line, 2);
     EXPECT_EQ(r.diagnostics[0].loc.col, 10);
-    EXPECT_NE(r.diagnostics[0].message.find("'ellipsoid'"), std::string::npos);
+    EXPECT_NE(r.diagnostics[0].message.find("'teapot'"), std::string::npos);
     const auto& objects = r.scene.subgraphs[0].children.at(0).objects;
     ASSERT_EQ(objects.size(), 1u);
     EXPECT_EQ(objects[0].kind, ShapeKind::Sphere);
@@ -72,7 +72,7 @@ TEST(ParseLenient, UnknownObjectTypeIsSkippedWithItsBlock) {
 TEST(ParseLenient, UnknownObjectTypeWithoutOpeningBracket) {
     // As with known types, the object's block ends at the next ']'.
     const auto r =
-        parse("mastersubgraph root [ trans [ object cow diffuse 1 1 1 ] object cube ] ] ]", true);
+        parse("mastersubgraph root [ trans [ object teapot diffuse 1 1 1 ] object cube ] ] ]", true);
     ASSERT_TRUE(parsed_ok(r));
     EXPECT_EQ(r.scene.subgraphs[0].children.at(0).objects.size(), 1u);
 }

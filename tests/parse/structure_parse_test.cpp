@@ -139,10 +139,13 @@ TEST(ParseStructure, TransDoesNotNest) {
                  "'trans' inside the trans block opened at 2:3"));
 }
 
-TEST(ParseStructure, TopLevelTransIsTheTuftsDialect) {
-    EXPECT_TRUE(error_at(parse("camera [ ]\ntrans [ object cube ]"), 2, 1, "'trans' at top level"));
-    EXPECT_TRUE(
-        error_at(parse("camera [ ]\ntrans [ object cube ]", true), 2, 1, "'trans' at top level"));
+TEST(ParseStructure, TopLevelTransInAFileWithMastersubgraphsMixesDialects) {
+    // A top-level trans makes a Brown/Tufts file (tests/parse/dialect_parse_test.cpp); beside a
+    // mastersubgraph it is an error, in either mode.
+    for (bool lenient : {false, true})
+        EXPECT_TRUE(error_at(parse(std::string(kRoot) + "trans [ object cube ]", lenient), 2, 1,
+                             "this file mixes two dialects: 'trans' at top level is the Brown/Tufts form, "
+                             "but 'mastersubgraph' at 1:1"));
 }
 
 TEST(ParseStructure, EndOfFileInsideABlock) {
@@ -204,18 +207,22 @@ TEST(ParseStructure, UnknownKeywordsNameTheBlock) {
     EXPECT_TRUE(
         error_at(parse("camera [ fov 40 ]"), 1, 10, "unknown keyword 'fov' in camera block"));
     EXPECT_TRUE(
-        error_at(parse("light [ number 0 ]"), 1, 9, "unknown keyword 'number' in light block"));
+        error_at(parse("light [ intensity 0 ]"), 1, 9, "unknown keyword 'intensity' in light block"));
     EXPECT_TRUE(error_at(parse("background [ colour 1 1 1 ]"), 1, 14,
-                         "unknown keyword 'colour' in background block (expected one of: color)"));
+                         "unknown keyword 'colour' in background block (did you mean 'color'?) "
+                         "(expected one of: color)"));
 }
 
-TEST(ParseStructure, WarningsComeBeforeTheErrorAndStopAtTheFirstError) {
+TEST(ParseStructure, WarningsAndEveryErrorInPositionOrder) {
     const auto r =
         parse("background [ color 1, 1 1 ]\nbackground [ color x 1 1 ] camera [ angle 0 ]");
-    ASSERT_EQ(r.diagnostics.size(), 2u);
+    ASSERT_EQ(r.diagnostics.size(), 3u);
     EXPECT_EQ(r.diagnostics[0].severity, Severity::Warning);
     EXPECT_EQ(r.diagnostics[1].severity, Severity::Error);
     EXPECT_EQ(r.diagnostics[1].loc.line, 2);
+    EXPECT_EQ(r.diagnostics[1].loc.col, 20);  // 'x'
+    EXPECT_EQ(r.diagnostics[2].severity, Severity::Error);
+    EXPECT_EQ(r.diagnostics[2].loc.col, 43);  // the angle's 0
 }
 
 TEST(ParseStructure, UnreadableFile) {

@@ -15,6 +15,8 @@ namespace whitted {
 namespace {
 
 constexpr ShapeKind kAllKinds[] = {ShapeKind::Cube, ShapeKind::Cylinder, ShapeKind::Cone, ShapeKind::Sphere};
+constexpr ShapeKind kWithEllipsoid[] = {ShapeKind::Cube, ShapeKind::Cylinder, ShapeKind::Cone, ShapeKind::Sphere,
+                                        ShapeKind::Ellipsoid};
 
 // Points on the surface of the unit shape, including its rims/corners (where extremes lie).
 std::vector<glm::vec3> surface_points(ShapeKind k, std::mt19937& rng) {
@@ -26,6 +28,11 @@ std::vector<glm::vec3> surface_points(ShapeKind k, std::mt19937& rng) {
         switch (k) {
             case ShapeKind::Sphere: {
                 const float r = std::sqrt(std::max(0.0f, 0.25f - y * y));
+                pts.emplace_back(r * std::cos(a), y, r * std::sin(a));
+                break;
+            }
+            case ShapeKind::Ellipsoid: {  // x² + 4y² + z² = 1
+                const float r = std::sqrt(std::max(0.0f, 1.0f - 4 * y * y));
                 pts.emplace_back(r * std::cos(a), y, r * std::sin(a));
                 break;
             }
@@ -96,11 +103,35 @@ TEST(UnitShapeBounds, SphereUnderScaleAndRotationIsAnalytic) {
     EXPECT_NEAR(e.hi.z, 0.5f, 1e-5f);
 }
 
+TEST(UnitShapeBounds, EllipsoidIsAnalytic) {
+    // Semi-axes 1, 0.5, 1; under scale (1, 2, 3) they become 1, 1, 3, then moved by (1, 2, 3).
+    const Bounds id = unit_shape_world_bounds(ShapeKind::Ellipsoid, glm::mat4(1));
+    const glm::vec3 half(1, 0.5f, 1);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_FLOAT_EQ(id.lo[i], -half[i]);
+        EXPECT_FLOAT_EQ(id.hi[i], half[i]);
+    }
+    glm::mat4 m = glm::translate(glm::mat4(1), glm::vec3(1, 2, 3));
+    m = glm::scale(m, glm::vec3(1, 2, 3));
+    const Bounds b = unit_shape_world_bounds(ShapeKind::Ellipsoid, m);
+    const glm::vec3 lo(0, 1, 0), hi(2, 3, 6);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(b.lo[i], lo[i], 1e-5f);
+        EXPECT_NEAR(b.hi[i], hi[i], 1e-5f);
+    }
+    // Rotated 90° about z: the long x axis lies along y.
+    const Bounds r = unit_shape_world_bounds(ShapeKind::Ellipsoid,
+                                             glm::rotate(glm::mat4(1), std::numbers::pi_v<float> / 2, glm::vec3(0, 0, 1)));
+    EXPECT_NEAR(r.hi.x, 0.5f, 1e-5f);
+    EXPECT_NEAR(r.hi.y, 1.0f, 1e-5f);
+    EXPECT_NEAR(r.hi.z, 1.0f, 1e-5f);
+}
+
 TEST(UnitShapeBounds, ContainTransformedSurfacesAndAreTight) {
     std::mt19937 rng(1234);
     for (int trial = 0; trial < 50; ++trial) {
         const glm::mat4 m = random_transform(rng);
-        for (ShapeKind k : kAllKinds) {
+        for (ShapeKind k : kWithEllipsoid) {
             const Bounds b = unit_shape_world_bounds(k, m);
             Bounds seen;
             for (const glm::vec3& p : surface_points(k, rng)) {

@@ -12,7 +12,8 @@
 namespace whitted {
 namespace {
 
-constexpr ShapeKind kAllKinds[] = {ShapeKind::Cube, ShapeKind::Cylinder, ShapeKind::Cone, ShapeKind::Sphere};
+constexpr ShapeKind kAllKinds[] = {ShapeKind::Cube, ShapeKind::Cylinder, ShapeKind::Cone, ShapeKind::Sphere,
+                                   ShapeKind::Ellipsoid};
 constexpr float kEps = 1e-5f;
 
 ShapeSpan hit(ShapeKind kind, glm::vec3 o, glm::vec3 d) { return intersect_unit_shape(kind, Ray{o, d}); }
@@ -204,6 +205,7 @@ bool on_part(ShapeKind k, ShapePart part, glm::vec3 p, float eps) {
         case kPartSide: break;
     }
     if (k == ShapeKind::Sphere) return std::abs(glm::length(p) - 0.5f) <= eps;
+    if (k == ShapeKind::Ellipsoid) return std::abs(p.x * p.x + 4 * p.y * p.y + p.z * p.z - 1) <= 4 * eps;
     if (k == ShapeKind::Cylinder) return std::abs(r - 0.5f) <= eps && in(p.y);
     return k == ShapeKind::Cone && std::abs(r - (0.5f - p.y) / 2) <= eps && in(p.y);
 }
@@ -216,6 +218,7 @@ bool inside(ShapeKind k, glm::vec3 p) {
         case ShapeKind::Sphere: return glm::length(p) <= 0.5f;
         case ShapeKind::Cylinder: return slab && r <= 0.5f;
         case ShapeKind::Cone: return slab && r <= (0.5f - p.y) / 2;
+        case ShapeKind::Ellipsoid: return p.x * p.x + 4 * p.y * p.y + p.z * p.z <= 1;
     }
     return false;
 }

@@ -63,6 +63,14 @@ inline Picture distinct_picture(int w = 5, int h = 3) {
     return p;
 }
 
+// A 4 × 4 picture of one colour.
+inline Picture solid(glm::u8vec3 c) {
+    Picture p(4, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) p.set(x, y, c);
+    return p;
+}
+
 inline bool write_png(const std::string& path, const Picture& p) {
     return stbi_write_png(path.c_str(), p.width, p.height, 3, p.rgb.data(), p.width * 3) != 0;
 }
@@ -224,6 +232,18 @@ inline std::optional<HandHit> hand_intersect(ShapeKind kind, glm::dvec3 o, glm::
             }
             break;
         }
+        case ShapeKind::Ellipsoid: {  // x² + 4y² + z² = 1, gradient ∝ (x, 4y, z)
+            double t0, t1;
+            const double a = d.x * d.x + 4 * d.y * d.y + d.z * d.z;
+            const double b = 2 * (o.x * d.x + 4 * o.y * d.y + o.z * d.z);
+            const double c = o.x * o.x + 4 * o.y * o.y + o.z * o.z - 1;
+            if (quadratic_roots(a, b, c, t0, t1))
+                for (double t : {t0, t1}) {
+                    const glm::dvec3 p = o + t * d;
+                    consider(t, Piece::Side, {p.x, 4 * p.y, p.z}, 1.0);
+                }
+            break;
+        }
         case ShapeKind::Cylinder:
         case ShapeKind::Cone: {
             const bool cone = kind == ShapeKind::Cone;
@@ -264,7 +284,7 @@ inline glm::dvec2 hand_uv(ShapeKind kind, const HandHit& h) {
     const double around = 0.5 - phi / (2 * std::numbers::pi);
     switch (h.piece) {
         case Piece::Side:
-            if (kind == ShapeKind::Sphere) return {around, 0.5 - std::asin(std::clamp(2 * p.y, -1.0, 1.0)) / std::numbers::pi};
+            if (kind == ShapeKind::Sphere || kind == ShapeKind::Ellipsoid) return {around, 0.5 - std::asin(std::clamp(2 * p.y, -1.0, 1.0)) / std::numbers::pi};
             return {around, 0.5 - p.y};
         case Piece::TopCap: return {p.x + 0.5, p.z + 0.5};
         case Piece::BottomCap: return {p.x + 0.5, 0.5 - p.z};

@@ -348,6 +348,30 @@ TEST(RenderController, LoadsASceneFileAndReportsItsCounts) {
     EXPECT_EQ(c.status().load_stats.lights, 2u);
 }
 
+TEST(RenderController, ANewSceneTimeLoadsAgainAndTheDialectIsReported) {
+    // A Brown/Tufts file whose ball moves right with t (scene-format.md §9.4).
+    std::string dir = test::make_temp_dir();
+    std::string path = test::write_file(dir, "moving.sc",
+                                        "camera [ eye 0 0 5 focus 0 0 0 ]\nlight [ number 0 position 2 2 5 ]\n"
+                                        "trans [ velocity 1 0 0 object sphere [ diffuse 1 0 0 ] ]\n");
+    RenderController c;
+    RenderSettings s;
+    s.width = 40;
+    s.height = 30;
+    LoadOptions at0;
+    c.start(path, at0, s);
+    ASSERT_TRUE(c.wait(30s));
+    ASSERT_EQ(c.status().state, RenderState::Finished) << c.status().message;
+    EXPECT_EQ(c.status().load_stats.dialect, Dialect::BrownTufts);
+    EXPECT_GT(c.image().at(20, 15).x, 100);  // the ball in the middle
+    LoadOptions at1 = at0;
+    at1.time = 1;  // the ball moves one unit right: out of the middle pixel (radius 0.5)
+    c.start(path, at1, s);
+    ASSERT_TRUE(c.wait(30s));
+    EXPECT_FALSE(c.status().scene_reused);
+    EXPECT_EQ(c.image().at(20, 15), glm::u8vec3(0));
+}
+
 TEST(RenderController, ASceneWithErrorsEndsInTheFailedStateWithItsMessages) {
     std::string dir = test::make_temp_dir();
     std::string path = test::write_file(dir, "bad.sc", "camera [ eye 0 0 5 focus 0 0 0 ]\nlight [ position 1 2 ]\n"

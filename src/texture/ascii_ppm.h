@@ -1,0 +1,17 @@
+#pragma once
+// Plain (ASCII, "P3") PPM, which stb_image does not read: the Brown/Tufts course's textures
+// are in it (scene-format.md §9.4).
+#include <string>
+#include <string_view>
+
+#include "flatten/flat_scene.h"
+
+namespace whitted {
+
+bool is_ascii_ppm(std::string_view bytes);
+
+// Decodes a P3 file: texel = value / maxval (linear, as every texture). False with `reason` for a
+// malformed or truncated file, a value above maxval, or a size past 2^26 pixels.
+bool decode_ascii_ppm(std::string_view bytes, TextureImage& out, std::string& reason);
+
+}  // namespace whitted
