@@ -44,7 +44,7 @@ void add_mpi_options(CLI::App& app, MpiOptions& m) {
         ->check(CLI::Range(0.0, 60.0));
     // Test-only (hidden): the schedule in a shuffled order, a slowed rank, a rank off by a little.
     app.add_option("--test-schedule-seed", m.schedule_seed)->group("");
-    app.add_option("--test-slow-rank", m.knobs.slow_rank)->group("");
+    app.add_option("--test-slow-rank", m.knobs.slow_rank)->group("");  // -1: every rank
     app.add_option("--test-slow-ms", m.knobs.slow_ms)->group("");
     app.add_option("--test-corrupt-rank", m.knobs.corrupt_rank)->group("");
 }

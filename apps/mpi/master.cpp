@@ -268,6 +268,9 @@ int run_master(const RankSetup& s) {
             return c;
         }
     }
+    if (!s.resume.empty() && !s.options->quiet)
+        std::cerr << "whitted-mpi: resuming: " << std::count(done.begin(), done.end(), true) << " of " << s.grid.count()
+                  << " tiles from " << s.resume << "\n";
     Master m(s, std::move(film), done);
     return m.run();
 }

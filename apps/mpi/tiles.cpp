@@ -23,7 +23,7 @@ RenderedShare render_share(const Integrator& integrator, const RenderJob& job, c
     j.tile_size = grid.size;
     std::mutex m;
     j.on_tile = [&](const Tile& r) {
-        if (rank == knobs.slow_rank && knobs.slow_ms > 0)
+        if (knobs.slows(rank))
             std::this_thread::sleep_for(std::chrono::milliseconds(knobs.slow_ms));
         std::lock_guard lock(m);
         share.tiles.push_back(grid.index_of(r));

@@ -49,9 +49,10 @@ struct RenderedShare {
     double seconds = 0;
 };
 
-// Test-only knobs (hidden options): a slowed rank, a rank whose pixels are off by a little.
+// Test-only knobs (hidden options): a slowed rank (-1: every rank), a rank whose pixels are off by a little.
 struct TestKnobs {
     int slow_rank = -1, slow_ms = 0;
+    bool slows(int rank) const { return slow_ms > 0 && (slow_rank < 0 || slow_rank == rank); }
     int corrupt_rank = -1;
 };
 
