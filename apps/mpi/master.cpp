@@ -184,7 +184,8 @@ int Master::run() {
             if (tiles.empty()) break;
             local.push(std::move(tiles));
         }
-        while (auto share = local.pop_finished()) {
+        bool last = false;
+        while (auto share = local.pop_finished(last)) {
             busy = true;
             for (int t : share->tiles) merge_tile(0, t, share->film);
             progress.add(0, 0, share->rays);

@@ -1,5 +1,7 @@
 #include "share_queue.h"
 
+#include <algorithm>
+
 namespace whitted::mpi {
 
 ShareQueue::ShareQueue(const Integrator& integrator, const RenderJob& job, const TileGrid& grid, int rank,
@@ -27,17 +29,20 @@ void ShareQueue::push(std::vector<int> tiles) {
     wake_.notify_all();
 }
 
-std::optional<RenderedShare> ShareQueue::pop_finished() {
+std::optional<RenderedShare> ShareQueue::pop_finished(bool& last_of_share) {
     std::lock_guard lock(mutex_);
     if (finished_.empty()) return std::nullopt;
-    RenderedShare s = std::move(finished_.front());
+    RenderedShare s = std::move(finished_.front().first);
+    last_of_share = finished_.front().second;
     finished_.pop_front();
     return s;
 }
 
 int ShareQueue::pending() const {
     std::lock_guard lock(mutex_);
-    return int(queued_.size() + finished_.size()) + rendering_;
+    int shares = int(queued_.size()) + rendering_;
+    for (const auto& f : finished_) shares += f.second ? 1 : 0;
+    return shares;
 }
 
 void ShareQueue::cancel() {
@@ -59,12 +64,19 @@ void ShareQueue::run() {
         std::vector<int> tiles = std::move(queued_.front());
         queued_.pop_front();
         ++rendering_;
-        lock.unlock();
-        RenderedShare share = render_share(integrator_, job_, grid_, tiles, rank_, knobs_);
-        lock.lock();
-        busy_ += share.seconds;
-        --rendering_;
-        finished_.push_back(std::move(share));
+        const std::size_t batch = std::size_t(std::max(16, 4 * job_.threads));
+        for (std::size_t at = 0; at < tiles.size(); at += batch) {
+            const std::size_t end = std::min(tiles.size(), at + batch);
+            const std::vector<int> part(tiles.begin() + std::ptrdiff_t(at), tiles.begin() + std::ptrdiff_t(end));
+            lock.unlock();
+            RenderedShare share = render_share(integrator_, job_, grid_, part, rank_, knobs_);
+            lock.lock();
+            busy_ += share.seconds;
+            const bool last = end == tiles.size() || cancel_;
+            if (last) --rendering_;
+            finished_.emplace_back(std::move(share), last);
+            if (last) break;
+        }
     }
 }
 

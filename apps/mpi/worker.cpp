@@ -1,9 +1,9 @@
 // A worker rank: keeps two requests in flight, renders what it is given on its own thread, sends
-// each share back as it finishes (with the next request), and stops when told or out of work.
+// each share back in batches as they finish (the last with the next request), and stops when told or out of work.
 #include <mpi.h>
 
 #include <chrono>
-#include <list>
+#include <cstring>
 #include <thread>
 
 #include "protocol.h"
@@ -11,14 +11,6 @@
 #include "share_queue.h"
 
 namespace whitted::mpi {
-namespace {
-
-struct PendingSend {
-    MPI_Request request;
-    std::vector<char> bytes;
-};
-
-}  // namespace
 
 int run_worker(const RankSetup& s) {
     const auto start = std::chrono::steady_clock::now();
@@ -29,7 +21,6 @@ int run_worker(const RankSetup& s) {
     int in_flight = 2;
     for (int i = 0; i < in_flight; ++i) MPI_Send(&threads, 1, MPI_INT32_T, 0, kRequest, MPI_COMM_WORLD);
     bool no_more = false, said_bye = false;
-    std::list<PendingSend> sends;
     for (;;) {
         bool busy = false;
         int flag = 0;
@@ -44,7 +35,6 @@ int run_worker(const RankSetup& s) {
             if (st.MPI_TAG == kFinish) {
                 std::int32_t code = 0;
                 std::memcpy(&code, msg.data(), sizeof code);
-                for (auto& p : sends) MPI_Wait(&p.request, MPI_STATUS_IGNORE);
                 return code;
             }
             if (st.MPI_TAG == kCancel) {
@@ -60,20 +50,18 @@ int run_worker(const RankSetup& s) {
         }
         // Ctrl-C (mpirun's SIGTERM): ask for nothing more; rank 0 says when to stop rendering.
         if (s.interrupted->load(std::memory_order_relaxed)) no_more = true;
-        while (auto share = queue.pop_finished()) {
+        bool last = false;
+        while (auto share = queue.pop_finished(last)) {
             busy = true;
-            const bool more = !no_more;
-            sends.push_back({MPI_REQUEST_NULL, pack_result(*share, s.grid, more)});
-            PendingSend& p = sends.back();
-            MPI_Isend(p.bytes.data(), int(p.bytes.size()), MPI_BYTE, 0, kResult, MPI_COMM_WORLD, &p.request);
-            stats.bytes_sent += p.bytes.size();
+            // The share's last batch carries the next request.
+            const bool more = last && !no_more;
+            const std::vector<char> bytes = pack_result(*share, s.grid, more);
+            // Blocking: large messages move only while both sides drive them, and the render
+            // thread goes on meanwhile.
+            MPI_Send(bytes.data(), int(bytes.size()), MPI_BYTE, 0, kResult, MPI_COMM_WORLD);
+            stats.bytes_sent += bytes.size();
             stats.tiles += std::int32_t(share->tiles.size());
             if (more) ++in_flight;
-        }
-        for (auto it = sends.begin(); it != sends.end();) {
-            int done = 0;
-            MPI_Test(&it->request, &done, MPI_STATUS_IGNORE);
-            it = done ? sends.erase(it) : std::next(it);
         }
         if (!said_bye && in_flight == 0 && queue.pending() == 0) {
             stats.busy = queue.busy_seconds();
