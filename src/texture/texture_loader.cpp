@@ -147,15 +147,16 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
                     scene.textures.push_back(std::move(img));
                 }
             }
-            if (index < 0 && options.missing == MissingTexturePolicy::Checker) {
-                if (checker < 0) {
+            if (index < 0) {
+                const bool as_checker = options.missing == MissingTexturePolicy::Checker;
+                missing.push_back({ref.file, ref.loc, {}, "not among the files received"});
+                diagnostics.push_back({as_checker ? Severity::Warning : Severity::Error, ref.loc,
+                                       "texture '" + ref.file + "': not among the files received"});
+                if (as_checker && checker < 0) {
                     checker = int(scene.textures.size());
                     scene.textures.push_back(checker_texture());
                 }
-                index = checker;
-            } else if (index < 0) {
-                missing.push_back({ref.file, ref.loc, {}, "not among the files received"});
-                diagnostics.push_back({Severity::Error, ref.loc, "texture '" + ref.file + "': not among the files received"});
+                if (as_checker) index = checker;
             }
             index_of_name[ref.file] = index;
             scene.materials[m].texture = index;
