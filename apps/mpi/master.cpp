@@ -202,6 +202,7 @@ int Master::run() {
         if (cancelled && Clock::now() > give_up_at) break;  // a rank that does not answer: write what is here
         if (!busy) std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
+    const double render_wall = seconds(Clock::now() - start);  // the image write is not rendering
     progress.draw(true);
     progress.finish();
     checkpoint.flush(true);
@@ -220,7 +221,7 @@ int Master::run() {
     } else if (!s.options->quiet) {
         std::cerr << "wrote " << s.options->output << "\n";
     }
-    if (s.options->stats) print_stats(seconds(Clock::now() - start), local.busy_seconds());
+    if (s.options->stats) print_stats(render_wall, local.busy_seconds());
     const std::int32_t c = code;
     for (int r = 1; r < s.ranks; ++r) MPI_Send(&c, 1, MPI_INT32_T, r, kFinish, MPI_COMM_WORLD);
     if (!all_bye()) {  // some rank never finished: MPI_Finalize could wait for it forever
