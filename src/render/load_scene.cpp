@@ -29,7 +29,8 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     if (!flat.ok() || cancelled()) return result;
 
     t = Clock::now();
-    result.missing_textures = load_textures(flat, parsed.scene.path, options.textures, result.diagnostics);
+    result.missing_textures = load_textures(flat, parsed.scene.path, options.textures, result.diagnostics,
+                                             &result.texture_files);
     result.stats.texture_seconds = since(t);
     if (has_errors(result.diagnostics) || cancelled()) return result;
 

@@ -24,9 +24,13 @@ std::vector<Tile> cut_into_tiles(const PixelRegion& r, int tile_size) {
 int RenderJob::tile_count() const { return int(cut_into_tiles(render_region(), tile_size).size()); }
 
 RenderStats render(const Integrator& integrator, const RenderJob& job, Film& film) {
+    return render_tiles(integrator, job, cut_into_tiles(job.render_region(), job.tile_size), film);
+}
+
+RenderStats render_tiles(const Integrator& integrator, const RenderJob& job, const std::vector<Tile>& tiles,
+                         Film& film) {
     const auto start = std::chrono::steady_clock::now();
     RenderStats stats;
-    const std::vector<Tile> tiles = cut_into_tiles(job.render_region(), job.tile_size);
     stats.tiles_total = int(tiles.size());
     stats.threads = worker_count(job.threads, tiles.size());
 

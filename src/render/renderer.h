@@ -2,6 +2,8 @@
 // Image-space driver: cuts the job's region into tiles, hands them to worker threads (each with
 // its own TileRenderer), and stops when asked. Every pixel depends only on its own coordinates
 // and sample indices, so the image is the same for any thread count and tile size.
+#include <vector>
+
 #include "film/film.h"
 #include "film/image.h"
 #include "integrator/integrator.h"
@@ -20,6 +22,12 @@ struct RenderStats {
 // Adds the job's samples of its region to `film` (of the job's size, covering the region) through
 // `integrator`, which sees the scene through the camera it was made with.
 RenderStats render(const Integrator& integrator, const RenderJob& job, Film& film);
+
+// The same for the given tiles of the job's image (each inside the film's region, at most
+// job.tile_size on a side), spread over the job's threads: how a share handed out by another
+// machine is rendered.
+RenderStats render_tiles(const Integrator& integrator, const RenderJob& job, const std::vector<Tile>& tiles,
+                         Film& film);
 
 // The common case: the job's integrator on the job's camera, the whole image, into `image` (of the
 // job's size; pixels of tiles not reached before a cancel are left black).

@@ -29,14 +29,19 @@ bool decoded_past_the_end(const std::vector<unsigned char>& bytes, const unsigne
     return !same;
 }
 
-// Decodes to linear floats (texel = byte / 255, no gamma decoding; alpha ignored).
-bool decode(const std::string& path, TextureImage& out, std::string& reason) {
+bool read_file(const std::string& path, std::vector<unsigned char>& bytes, std::string& reason) {
     std::ifstream in(path, std::ios::binary);
-    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     if (!in.good() && !in.eof()) {
         reason = "cannot read '" + path + "'";
         return false;
     }
+    return true;
+}
+
+// Decodes the bytes of file `path` to linear floats (texel = byte / 255, no gamma decoding;
+// alpha ignored).
+bool decode(const std::vector<unsigned char>& bytes, const std::string& path, TextureImage& out, std::string& reason) {
     if (bytes.size() > std::size_t(std::numeric_limits<int>::max())) {
         reason = "cannot decode '" + path + "': the file is too large";
         return false;
@@ -165,10 +170,12 @@ std::vector<std::string> loose_texture_candidates(const std::string& name, const
 }
 
 std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string& scene_path,
-                                          const TextureOptions& options, std::vector<Diagnostic>& diagnostics) {
+                                          const TextureOptions& options, std::vector<Diagnostic>& diagnostics,
+                                          TextureFiles* kept) {
     std::vector<MissingTexture> missing;
     std::unordered_map<std::string, int> index_of_file;  // resolved path → texture index
     std::unordered_map<std::string, int> index_of_name;  // name as written → index (or checker)
+    std::unordered_map<std::string, std::string> name_of_file;  // resolved path → the first name that found it
     int checker = -1;
     auto& scene = flat.scene;
 
@@ -178,6 +185,32 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
         const TextureRef& ref = *src->material.texture;
         if (auto it = index_of_name.find(ref.file); it != index_of_name.end()) {
             scene.materials[m].texture = it->second;  // -1: already reported missing
+            continue;
+        }
+        if (options.preread) {
+            // Another process did the search: decode what it found, or call the name missing.
+            int index = -1;
+            if (auto f = options.preread->find(ref.file); f != options.preread->end()) {
+                TextureImage img;
+                std::string why;
+                if (decode(f->second, ref.file, img, why)) {
+                    index = int(scene.textures.size());
+                    scene.textures.push_back(std::move(img));
+                }
+            }
+            if (index < 0) {
+                const bool as_checker = options.missing == MissingTexturePolicy::Checker;
+                missing.push_back({ref.file, ref.loc, {}, "not among the files received"});
+                diagnostics.push_back({as_checker ? Severity::Warning : Severity::Error, ref.loc,
+                                       "texture '" + ref.file + "': not among the files received"});
+                if (as_checker && checker < 0) {
+                    checker = int(scene.textures.size());
+                    scene.textures.push_back(checker_texture());
+                }
+                if (as_checker) index = checker;
+            }
+            index_of_name[ref.file] = index;
+            scene.materials[m].texture = index;
             continue;
         }
         std::vector<std::string> candidates;
@@ -195,10 +228,15 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
             if (!fs::is_regular_file(c, ec)) continue;
             std::string key = fs::weakly_canonical(c, ec).string();
             if (ec) key = fs::absolute(c).lexically_normal().string();
-            if (auto f = index_of_file.find(key); f != index_of_file.end()) { index = f->second; break; }
+            if (auto f = index_of_file.find(key); f != index_of_file.end()) {
+                index = f->second;
+                if (kept && options.keep_files) (*kept)[ref.file] = (*kept)[name_of_file[key]];  // another spelling
+                break;
+            }
             TextureImage img;
             std::string why;
-            if (!decode(c, img, why)) {
+            std::vector<unsigned char> bytes;
+            if (!read_file(c, bytes, why) || !decode(bytes, c, img, why)) {
                 // Found but unreadable: remember why and keep looking; a later place may hold a good copy.
                 if (reason.empty()) reason = why;
                 continue;
@@ -206,6 +244,8 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
             index = int(scene.textures.size());
             scene.textures.push_back(std::move(img));
             index_of_file[key] = index;
+            name_of_file[key] = ref.file;
+            if (kept && options.keep_files) (*kept)[ref.file] = std::move(bytes);
             if (!reason.empty())
                 diagnostics.push_back({Severity::Warning, ref.loc,
                                        "texture '" + ref.file + "': skipped an unreadable file (" + reason +

@@ -15,6 +15,9 @@ enum class MissingTexturePolicy {
     Checker,  // draw it as a magenta/black checkerboard, with a warning
 };
 
+// The bytes of texture files, by name as written in the scene (`texture NAME`).
+using TextureFiles = std::map<std::string, std::vector<unsigned char>>;
+
 struct TextureOptions {
     std::vector<std::string> search_dirs;  // user-given, tried after the built-in places
     // Answers for textures that were missing before: name as written in the scene → file.
@@ -23,6 +26,11 @@ struct TextureOptions {
     // user declined to look for them; others are still errors).
     std::set<std::string> checker_names;
     MissingTexturePolicy missing = MissingTexturePolicy::Error;
+    // Files another process already found and read (the ranks of an MPI job get rank 0's): when
+    // set, each name is decoded from these bytes and no file is looked for; a name not here is missing.
+    const TextureFiles* preread = nullptr;
+    // Keep the bytes of every file a texture was decoded from (LoadResult::texture_files), to send on.
+    bool keep_files = false;
 };
 
 struct MissingTexture {
@@ -57,8 +65,10 @@ std::vector<std::string> loose_texture_candidates(const std::string& name, const
 // tried (with a warning if one of them works). Returns the textures that could not be had, each
 // once, with the first `texture` keyword that named it; under Error each is an error diagnostic,
 // under Checker they are drawn as a checkerboard and a warning is added.
+// With options.keep_files, `kept` (when given) gets the bytes of each file decoded.
 std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string& scene_path,
-                                          const TextureOptions& options, std::vector<Diagnostic>& diagnostics);
+                                          const TextureOptions& options, std::vector<Diagnostic>& diagnostics,
+                                          TextureFiles* kept = nullptr);
 
 // A visible stand-in for a missing texture: magenta and black squares.
 TextureImage checker_texture();

@@ -518,7 +518,7 @@ TEST_F(ViewerE2E, TheToolBarKeepsItsLayoutWhenTheWindowIsResized) {
     Ready made;
     ASSERT_TRUE(wait_for_ready(viewer, ready, made, [](const Ready&) { return true; })) << viewer.output();
     ASSERT_EQ(made.window.w, 1000);  // the default size, wide enough for every tool
-    ASSERT_EQ(made.tools.size(), 9u);
+    ASSERT_EQ(made.tools.size(), 10u);  // render, stop, width, height, fit, depth, mode, AA, SPP, threads
     for (const auto& [name, b] : made.tools) {
         EXPECT_TRUE(b.shown) << name;
         EXPECT_EQ(b.h, 24) << name;

@@ -1,0 +1,53 @@
+#include "load_report.h"
+
+#include <cstdio>
+#include <iostream>
+#include <vector>
+
+namespace whitted::cli {
+namespace {
+
+// Warnings printed before the rest are only counted: a file with 100,000 stray brackets
+// should not bury its one real message.
+constexpr int kMaxWarningsShown = 50;
+
+}  // namespace
+
+int report_load(const LoadResult& loaded, const RenderOptions& o, const char* program) {
+    int warnings = 0;
+    std::vector<Diagnostic> diagnostics = loaded.diagnostics;
+    if (o.mode_name == "path")  // warnings that hold only there (§9.2)
+        diagnostics.insert(diagnostics.end(), loaded.path_warnings.begin(), loaded.path_warnings.end());
+    for (const Diagnostic& d : diagnostics)
+        if (d.severity == Severity::Error || ++warnings <= kMaxWarningsShown) std::cerr << d.str() << "\n";
+    if (warnings > kMaxWarningsShown)
+        std::cerr << program << ": " << warnings - kMaxWarningsShown << " more warnings not shown\n";
+    if (loaded.cancelled) {
+        std::cerr << program << ": interrupted while loading the scene: nothing written\n";
+        return kExitInterrupted;
+    }
+    if (!loaded.ok()) {
+        if (!loaded.missing_textures.empty() && o.missing == "error")
+            std::cerr << program << ": use --texture-path DIR to add a place to look, or --missing-textures=checker "
+                                    "to render without them\n";
+        return loaded.unreadable ? kExitIo : kExitScene;
+    }
+    return kExitOk;
+}
+
+void print_stats(const LoadStats& ls, const RenderStats& rs, int samples_per_pixel) {
+    std::fprintf(stderr,
+                 "dialect %s\n"
+                 "objects %zu, lights %zu, textures %zu; %d samples per pixel\n"
+                 "parse %.3fs, flatten %.3fs, textures %.3fs, build %.3fs, render %.3fs (%d threads)\n"
+                 "rays: camera %llu, reflected %llu, refracted %llu, shadow %llu; %.2f Mrays/s\n"
+                 "samples rejected (not finite, counted as black): %llu\n",
+                 dialect_name(ls.dialect), ls.objects, ls.lights, ls.textures, samples_per_pixel, ls.parse_seconds,
+                 ls.flatten_seconds, ls.texture_seconds, ls.build_seconds, rs.seconds, rs.threads,
+                 (unsigned long long)rs.rays.camera, (unsigned long long)rs.rays.reflected,
+                 (unsigned long long)rs.rays.refracted, (unsigned long long)rs.rays.shadow,
+                 rs.seconds > 0 ? double(rs.rays.total()) / rs.seconds * 1e-6 : 0.0,
+                 (unsigned long long)rs.rays.rejected);
+}
+
+}  // namespace whitted::cli

@@ -1,0 +1,17 @@
+#pragma once
+// What the command-line renderers print about a load and a render: the scene's diagnostics (with
+// the exit code they mean) and the --stats lines.
+#include "render/load_scene.h"
+#include "render/renderer.h"
+#include "render_options.h"
+
+namespace whitted::cli {
+
+// Prints the load's warnings and errors to stderr. Returns kExitOk when there is a scene to
+// render, else the code to exit with (interrupted, bad scene, unreadable file).
+int report_load(const LoadResult& loaded, const RenderOptions& o, const char* program);
+
+// The --stats lines of a load and a render.
+void print_stats(const LoadStats& ls, const RenderStats& rs, int samples_per_pixel);
+
+}  // namespace whitted::cli

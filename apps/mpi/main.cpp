@@ -1,0 +1,137 @@
+// whitted-mpi: one image rendered across the ranks of an MPI job (Open MPI, Slurm).
+//   mpirun -np N whitted-mpi SCENE -o OUT [every option of whitted] [--tile-size N]
+//          [--checkpoint FILE [--checkpoint-every S]] [--resume FILE]
+// The image is byte-identical to `whitted SCENE -o OUT` with the same options. Exit codes as
+// whitted's (0, 1 usage, 2 scene, 3 I/O, 130 interrupted) and 4: two ranks rendered a tile to
+// different bytes. Every rank exits with the same code.
+#include <mpi.h>
+
+#include <chrono>
+#include <iostream>
+#include <thread>
+
+#include "interrupt.h"
+#include "load_report.h"
+#include "ranks.h"
+#include "render_options.h"
+#include "scene_share.h"
+#include "util/parallel_for.h"
+
+namespace {
+
+using namespace whitted;
+using namespace whitted::cli;
+using namespace whitted::mpi;
+
+struct MpiOptions {
+    int tile_size = 32;
+    std::string checkpoint, resume;
+    double checkpoint_every = 5, grace = 0.5;
+    std::uint64_t schedule_seed = 0;
+    TestKnobs knobs;
+};
+
+void add_mpi_options(CLI::App& app, MpiOptions& m) {
+    app.add_option("--tile-size", m.tile_size, "Tile size in pixels: the unit handed to ranks and checkpointed")
+        ->check(CLI::Range(4, 1024));
+    app.add_option("--checkpoint", m.checkpoint,
+                   "Keep the finished tiles in FILE (flushed every --checkpoint-every seconds) for --resume");
+    app.add_option("--checkpoint-every", m.checkpoint_every, "Seconds between checkpoint flushes")
+        ->check(CLI::Range(0.0, 86400.0));
+    app.add_option("--resume", m.resume, "Render only the tiles a --checkpoint FILE of the same job does not hold");
+    app.add_option("--interrupt-grace", m.grace,
+                   "Seconds rank 0 waits for tiles in flight after Ctrl-C/SIGTERM before writing the partial image")
+        ->check(CLI::Range(0.0, 60.0));
+    // Test-only (hidden): the schedule in a shuffled order, a slowed rank, a rank off by a little.
+    app.add_option("--test-schedule-seed", m.schedule_seed)->group("");
+    app.add_option("--test-slow-rank", m.knobs.slow_rank)->group("");  // -1: every rank
+    app.add_option("--test-slow-ms", m.knobs.slow_ms)->group("");
+    app.add_option("--test-corrupt-rank", m.knobs.corrupt_rank)->group("");
+}
+
+// The options that change pixels (and the tile grid): a checkpoint is for these only.
+std::string pixel_options(const RenderOptions& o, const MpiOptions& m) {
+    return std::to_string(o.width) + "x" + std::to_string(o.height) + " " + o.mode_name + " depth " +
+           std::to_string(o.max_depth) + " aa " + std::to_string(o.aa) + " spp " + std::to_string(o.spp) +
+           " threshold " + std::to_string(o.aa_threshold) + " tile " + std::to_string(m.tile_size) + " " + o.missing +
+           (o.lenient ? " lenient" : "");
+}
+
+int run(int argc, char** argv, int rank, int ranks) {
+    const auto start = std::chrono::steady_clock::now();
+    CLI::App app{"whitted-mpi: whitted's image rendered across the ranks of an MPI job"};
+    app.set_version_flag("--version", "whitted-mpi 0.1.0");
+    app.footer("Run as: mpirun -np N whitted-mpi SCENE -o OUT [options]. Only rank 0 reads files. Exit codes: 0 done, "
+               "1 bad usage or mismatched ranks, 2 bad scene, 3 I/O failure, 4 ranks disagree on a tile, 130 "
+               "interrupted (the part rendered so far is written).");
+    RenderOptions o;
+    MpiOptions m;
+    add_render_options(app, o);
+    add_mpi_options(app, m);
+    // Every rank parses the same arguments; only rank 0 speaks.
+    if (rank != 0) {
+        std::cerr.setstate(std::ios::failbit);
+        std::cout.setstate(std::ios::failbit);
+    }
+    if (int code = parse_render_options(app, o, argc, argv, "whitted-mpi"); code != kExitOk) return code < 0 ? 0 : code;
+    if (rank != 0) std::cerr.clear();
+    if (!same_binary_and_options(argc, argv, rank, ranks)) return kExitUsage;
+
+    install_interrupt_handler();
+    SharedScene shared = share_scene(o, rank, &interrupt_flag());
+    if (shared.code != 0) return shared.code;
+
+    RankSetup s;
+    const auto integrator = make_integrator(*shared.loaded.scene, shared.loaded.scene->flat.camera,
+                                            render_job(o, nullptr).integrator);
+    s.integrator = integrator.get();
+    s.job = render_job(o, nullptr);
+    s.grid = {o.width, o.height, m.tile_size};
+    s.rank = rank;
+    s.ranks = ranks;
+    s.threads = worker_count(o.threads, std::size_t(1) << 20);
+    s.job.threads = s.threads;
+    s.knobs = m.knobs;
+    s.interrupted = &interrupt_flag();
+    if (rank != 0) return run_worker(s);
+    s.options = &o;
+    s.job_hash = fnv1a(pixel_options(o, m), shared.hash);
+    s.schedule_seed = m.schedule_seed;
+    s.checkpoint = m.checkpoint;
+    s.resume = m.resume;
+    s.checkpoint_seconds = m.checkpoint_every;
+    s.grace_seconds = m.grace;
+    s.broadcast_bytes = shared.bytes;
+    s.broadcast_seconds = shared.broadcast_seconds;
+    s.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (o.stats) {
+        const auto& ls = shared.loaded.stats;
+        std::fprintf(stderr, "objects %zu, lights %zu, textures %zu; rank 0: parse %.3fs, flatten %.3fs, textures "
+                             "%.3fs, build %.3fs\n",
+                     ls.objects, ls.lights, ls.textures, ls.parse_seconds, ls.flatten_seconds, ls.texture_seconds,
+                     ls.build_seconds);
+    }
+    return run_master(s);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int provided = 0;
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+    int rank = 0, ranks = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+    int code = kExitIo;
+    try {
+        code = run(argc, argv, rank, ranks);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "whitted-mpi: error: rank " << rank << " ran out of memory\n";
+        MPI_Abort(MPI_COMM_WORLD, kExitIo);
+    } catch (const std::exception& e) {
+        std::cerr << "whitted-mpi: error: rank " << rank << ": " << e.what() << "\n";
+        MPI_Abort(MPI_COMM_WORLD, kExitIo);
+    }
+    MPI_Finalize();
+    return code;
+}

@@ -1,0 +1,59 @@
+#include "tiles.h"
+
+#include <algorithm>
+#include <chrono>
+#include <mutex>
+#include <thread>
+
+namespace whitted::mpi {
+
+RenderedShare render_share(const Integrator& integrator, const RenderJob& job, const TileGrid& grid,
+                           const std::vector<int>& tiles, int rank, const TestKnobs& knobs) {
+    RenderedShare share;
+    if (tiles.empty()) return share;
+    PixelRegion box = grid.tile(tiles[0]);
+    std::vector<Tile> rects;
+    for (int t : tiles) {
+        const Tile r = grid.tile(t);
+        rects.push_back(r);
+        box = {std::min(box.x0, r.x0), std::min(box.y0, r.y0), std::max(box.x1, r.x1), std::max(box.y1, r.y1)};
+    }
+    share.film = Film(grid.width, grid.height, box);
+    RenderJob j = job;
+    j.tile_size = grid.size;
+    std::mutex m;
+    j.on_tile = [&](const Tile& r) {
+        if (knobs.slows(rank))
+            std::this_thread::sleep_for(std::chrono::milliseconds(knobs.slow_ms));
+        std::lock_guard lock(m);
+        share.tiles.push_back(grid.index_of(r));
+    };
+    const RenderStats stats = render_tiles(integrator, j, rects, share.film);
+    share.rays = stats.rays.total();
+    share.seconds = stats.seconds;
+    if (rank == knobs.corrupt_rank)
+        for (int t : share.tiles) share.film.at(grid.tile(t).x0, grid.tile(t).y0).sum.x += 1e-3f;
+    return share;
+}
+
+void append_tile_pixels(const Film& film, const Tile& t, std::vector<char>& out) {
+    for (int y = t.y0; y < t.y1; ++y) {
+        const char* row = reinterpret_cast<const char*>(&film.at(t.x0, y));
+        out.insert(out.end(), row, row + std::size_t(t.width()) * sizeof(FilmPixel));
+    }
+}
+
+bool read_tile_pixels(const char*& in, const char* end, const Tile& t, Film& film) {
+    const std::size_t row_bytes = std::size_t(t.width()) * sizeof(FilmPixel);
+    if (std::size_t(end - in) < row_bytes * std::size_t(t.height())) return false;
+    for (int y = t.y0; y < t.y1; ++y, in += row_bytes) std::memcpy(&film.at(t.x0, y), in, row_bytes);
+    return true;
+}
+
+bool same_pixels(const Film& a, const Film& b, const Tile& t) {
+    for (int y = t.y0; y < t.y1; ++y)
+        if (std::memcmp(&a.at(t.x0, y), &b.at(t.x0, y), std::size_t(t.width()) * sizeof(FilmPixel)) != 0) return false;
+    return true;
+}
+
+}  // namespace whitted::mpi

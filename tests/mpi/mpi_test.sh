@@ -1,0 +1,131 @@
+#!/usr/bin/env bash
+# whitted-mpi against whitted: the same bytes for any ranks, threads, tile size and schedule, and
+# the job's behaviour on Ctrl-C, a killed rank (then --resume), a bad scene and mismatched ranks.
+# Usage: mpi_test.sh CASE   with WHITTED, WHITTED_MPI and SOURCE_DIR set (tests/CMakeLists.txt).
+set -uo pipefail
+MODES="whitted raycast normals depth path"  # every render mode; a new mode is one word here
+
+case_name=$1
+src=$SOURCE_DIR
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+MPIRUN=(mpirun --oversubscribe --allow-run-as-root --mca btl self,vader)
+SIZE=(--width 96 --height 72)
+fail() { echo "FAIL: $*"; exit 1; }
+
+# Renders SCENE with whitted to $out/ref.png (extra args after SCENE).
+reference() { "$WHITTED" "$1" -o "$out/ref.png" -q "${SIZE[@]}" "${@:2}" || fail "whitted $*"; }
+# Renders with N ranks to $out/mpi.png and compares it with ref.png byte for byte.
+same_as_reference() {
+    local n=$1
+    shift
+    "${MPIRUN[@]}" -np "$n" "$WHITTED_MPI" "$@" -o "$out/mpi.png" -q "${SIZE[@]}" >"$out/log" 2>&1 ||
+        { cat "$out/log"; fail "mpirun -np $n whitted-mpi $*"; }
+    cmp "$out/ref.png" "$out/mpi.png" || fail "-np $n whitted-mpi $* differs from whitted"
+    echo "ok: -np $n $*"
+}
+# 1-4 ranks, each with other threads, tile size and schedule order.
+all_rank_counts() {
+    local scene=$1
+    shift
+    reference "$scene" "$@"
+    same_as_reference 1 "$scene" "$@" --threads 2 --tile-size 16
+    same_as_reference 2 "$scene" "$@" --threads 1 --tile-size 32 --test-schedule-seed 2
+    same_as_reference 3 "$scene" "$@" --threads 2 --tile-size 7 --test-schedule-seed 3
+    same_as_reference 4 "$scene" "$@" --threads 1 --tile-size 64
+}
+# Starts a slowed 3-rank job (100 ms a tile: about 4 s) in the background, $job its mpirun's pid,
+# and returns once some tiles are in its checkpoint $out/ck.
+start_slow_job() {
+    "${MPIRUN[@]}" -np 3 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/mpi.png" "${SIZE[@]}" --threads 1 \
+        --tile-size 8 --test-slow-ms 100 --checkpoint "$out/ck" --checkpoint-every 0.1 "$@" >"$out/log" 2>&1 &
+    job=$!
+    for _ in $(seq 300); do
+        (($(stat -c %s "$out/ck" 2>/dev/null || echo 0) > 5000)) && return
+        sleep 0.1
+    done
+    fail "no tile finished in 30 s"
+}
+tmp_files_left() { ls "$out" | grep -q '\.tmp'; }  # of the image or the checkpoint
+
+case $case_name in
+whitted_scene) all_rank_counts "$src/scenes/showcase.sc" ;;
+textured_scene) all_rank_counts "$src/scenes/textures.sc" --aa 2 ;;
+spp16_scene) all_rank_counts "$src/tests/mpi/effects.sc" --spp 16 ;;
+path_scene) all_rank_counts "$src/scenes/features/cornell_box.sc" --mode path --spp 8 --max-depth 8 ;;
+adaptive_aa) reference "$src/scenes/showcase.sc" --aa 3 --aa-threshold 0.1
+    same_as_reference 3 "$src/scenes/showcase.sc" --aa 3 --aa-threshold 0.1 --tile-size 8 --test-schedule-seed 5 ;;
+modes)
+    for mode in $MODES; do
+        reference "$src/tests/mpi/effects.sc" --mode "$mode" --spp 4
+        same_as_reference 3 "$src/tests/mpi/effects.sc" --mode "$mode" --spp 4 --tile-size 16 --test-schedule-seed 9
+    done ;;
+slow_rank)
+    # Rank 1 takes 30 ms a tile: the others take over its share at the tail, duplicates compared.
+    reference "$src/scenes/textures.sc"
+    same_as_reference 3 "$src/scenes/textures.sc" --tile-size 8 --test-slow-rank 1 --test-slow-ms 30 --stats
+    grep -q "duplicates sent [1-9]" "$out/log" || { cat "$out/log"; fail "no tile was handed out twice"; } ;;
+duplicate_mismatch)
+    # Rank 1's pixels are off by a little and it is slow, so its tiles come back second: refused.
+    "${MPIRUN[@]}" -np 3 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/mpi.png" "${SIZE[@]}" --tile-size 8 \
+        --threads 1 --test-slow-rank 1 --test-slow-ms 30 --test-corrupt-rank 1 >"$out/log" 2>&1
+    rc=$?
+    [[ $rc == 4 ]] || { cat "$out/log"; fail "exit code $rc, not 4"; }
+    grep -q "to other bytes than the rank that rendered it first" "$out/log" || fail "no mismatch message"
+    [[ ! -e $out/mpi.png ]] || fail "an image was written from disagreeing ranks" ;;
+ctrl_c)
+    # Ctrl-C on mpirun: SIGTERM to every rank; rank 0 writes the partial image atomically.
+    start_slow_job
+    kill -INT "$job"
+    wait "$job"
+    cat "$out/log"
+    grep -q "interrupted: wrote the [0-9]* of 108 tiles rendered so far" "$out/log" || fail "no partial write"
+    head -c 8 "$out/mpi.png" | od -An -c | grep -q "P   N   G" || fail "the partial image is not a PNG"
+    tmp_files_left && fail "temporary files left: $(ls "$out")"
+    echo "ok" ;;
+sigterm_exit_code)
+    # SIGTERM to every rank (what mpirun and Slurm do): every rank exits 130.
+    start_slow_job
+    kill -TERM $(pgrep -P "$job")
+    wait "$job"
+    rc=$?
+    [[ $rc == 130 ]] || { cat "$out/log"; fail "exit code $rc, not 130"; }
+    grep -q "interrupted: wrote the" "$out/log" || fail "no partial write" ;;
+killed_rank_resume)
+    # A rank killed part-way aborts the job; --resume renders only the missing tiles, same bytes.
+    reference "$src/scenes/textures.sc"
+    start_slow_job
+    kill -KILL $(pgrep -P "$job" | tail -1)
+    wait "$job"
+    # mpirun sends SIGTERM to the ranks left: rank 0 may write the part it has, a whole PNG.
+    [[ ! -e $out/mpi.png ]] || head -c 8 "$out/mpi.png" | od -An -c | grep -q "P   N   G" || fail "not a PNG"
+    tmp_files_left && fail "temporary files left: $(ls "$out")"
+    [[ -s $out/ck ]] || { cat "$out/log"; fail "no checkpoint"; }
+    same_as_reference 2 "$src/scenes/textures.sc" --threads 1 --tile-size 8 --resume "$out/ck" --checkpoint "$out/ck"
+    "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/mpi.png" "${SIZE[@]}" --tile-size 8 \
+        --resume "$out/ck" >"$out/log" 2>&1 || fail "second resume"
+    grep -Eq "resuming: ([1-9][0-9]*) of 108 tiles" "$out/log" || { cat "$out/log"; fail "nothing resumed"; }
+    grep -q "resuming: 108 of 108" "$out/log" || fail "the resumed run's checkpoint does not hold every tile"
+    cmp "$out/ref.png" "$out/mpi.png" || fail "resumed twice: differs"
+    # A checkpoint of another job is refused.
+    "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/other.png" --width 97 --height 72 \
+        --tile-size 8 --resume "$out/ck" >"$out/log" 2>&1 && fail "a checkpoint of another image size was used"
+    grep -q "resume with the options it was made with" "$out/log" || { cat "$out/log"; fail "no message"; } ;;
+scene_error)
+    printf 'camera [ eye 0 0 5 ]\nmastersubgraph root [\n  object sphere [ diffuse 1 1 ]\n]\n' >"$out/bad.sc"
+    "${MPIRUN[@]}" -np 3 "$WHITTED_MPI" "$out/bad.sc" -o "$out/mpi.png" >"$out/log" 2>&1
+    rc=$?
+    cat "$out/log"
+    [[ $rc == 2 ]] || fail "exit code $rc, not 2"
+    [[ $(grep -c "bad.sc:3:[0-9]*: error" "$out/log") == 1 ]] || fail "the error is not reported exactly once"
+    [[ ! -e $out/mpi.png ]] || fail "an image was written" ;;
+mismatched_ranks)
+    "${MPIRUN[@]}" -np 1 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/a.png" : \
+        -np 1 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/a.png" --width 100 >"$out/log" 2>&1 && fail "accepted"
+    grep -q "rank 1 was started with other options than rank 0" "$out/log" || { cat "$out/log"; fail "no message"; }
+    cp "$WHITTED_MPI" "$out/other-build" && printf 'x' >>"$out/other-build"
+    "${MPIRUN[@]}" -np 1 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/a.png" : \
+        -np 1 "$out/other-build" "$src/scenes/textures.sc" -o "$out/a.png" >"$out/log" 2>&1 && fail "accepted"
+    grep -q "rank 1 runs another whitted-mpi executable" "$out/log" || { cat "$out/log"; fail "no message"; } ;;
+*) fail "unknown case $case_name" ;;
+esac
