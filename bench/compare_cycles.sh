@@ -14,7 +14,8 @@
 # low-spp Cycles runs use seed 0, so they are independent of it), averaged; the pair also gives
 # the reference's own noise. whitted renders REF_SPP/2 and REF_SPP for the agreement check (whitted
 # has no seed; its sample sequence is nested, which gives its noise the same way). Images go to
-# KEEP_DIR/SCENE/ when -k is given (else a temporary directory, removed at the end).
+# KEEP_DIR/SCENE/ when -k is given (else a temporary directory, removed at the end); a Cycles reference
+# found there is reused while the scene, the converter, Blender and the settings are unchanged.
 # Blender 3.4 (Debian's blender) and numpy are installed when missing; they are a benchmark anchor
 # only, not dependencies of whitted (so not in scripts/install-deps.sh).
 set -euo pipefail
@@ -24,7 +25,7 @@ while getopts "s:R:t:W:H:d:b:k:" opt; do
   case "$opt" in
     s) spps="$OPTARG" ;; R) ref_spp="$OPTARG" ;; t) threads="$OPTARG" ;; W) width="$OPTARG" ;;
     H) height="$OPTARG" ;; d) depth="$OPTARG" ;; b) build="$OPTARG" ;; k) keep="$OPTARG" ;;
-    *) sed -n '2,19p' "$0"; exit 1 ;;
+    *) sed -n '2,20p' "$0"; exit 1 ;;
   esac
 done
 shift $((OPTIND - 1))
@@ -38,7 +39,7 @@ whitted="$build/apps/cli/whitted"
 need=()
 command -v blender >/dev/null || need+=(blender)
 command -v bc >/dev/null || need+=(bc)
-python3 -c 'import numpy' 2>/dev/null || need+=(python3-numpy)  # Blender's Python is the system's
+/usr/bin/python3 -c 'import numpy' 2>/dev/null || need+=(python3-numpy)  # Blender's Python is the system's
 if ((${#need[@]})); then
   sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
   echo "compare_cycles: installing ${need[*]}" >&2
@@ -95,11 +96,23 @@ for sc in "${scenes[@]}"; do
   echo
   echo "== $name ($(date -u +%H:%M:%S) UTC, load $(cut -d' ' -f1 /proc/loadavg))"
   half=$((ref_spp / 2))
-  for seed in 1 2; do
-    cycles "$out/cycles_ref$seed.exr" "$sc" "$half" "$seed"
-    role=ref_a; [ "$seed" = 1 ] || role=ref_b
-    printf '%s\tcycles\t%s\t%s\t%s\t%s\n' "$role" "$half" "$wall" "$render" "$out/cycles_ref$seed.exr" >> "$runs"
-  done
+  # The Cycles reference is kept in KEEP_DIR and reused while the scene, the converter, Blender and
+  # the settings are the same (its render time is then the one measured when it was made).
+  stamp="$(cat "$sc" "$here/sc_to_blender.py" | sha256sum | cut -c1-16) ${width}x$height spp $half x2 depth $depth $blender_version"
+  if [ -n "$keep" ] && [ -f "$out/cycles_ref.stamp" ] && [ "$(cat "$out/cycles_ref.stamp")" = "$stamp" ] &&
+     [ -f "$out/cycles_ref.tsv" ]; then
+    echo "(Cycles reference reused from $out: $stamp)"
+    cat "$out/cycles_ref.tsv" >> "$runs"
+  else
+    rm -f "$out/cycles_ref.stamp"; : > "$out/cycles_ref.tsv"
+    for seed in 1 2; do
+      cycles "$out/cycles_ref$seed.exr" "$sc" "$half" "$seed"
+      role=ref_a; [ "$seed" = 1 ] || role=ref_b
+      printf '%s\tcycles\t%s\t%s\t%s\t%s\n' "$role" "$half" "$wall" "$render" "$out/cycles_ref$seed.exr" >> "$out/cycles_ref.tsv"
+    done
+    echo "$stamp" > "$out/cycles_ref.stamp"
+    cat "$out/cycles_ref.tsv" >> "$runs"
+  fi
   whitted "$out/whitted_ref_half.pfm" "$sc" "$half"
   printf 'wref_half\twhitted\t%s\t%s\t%s\t%s\n' "$half" "$wall" "$render" "$out/whitted_ref_half.pfm" >> "$runs"
   whitted "$out/whitted_ref.pfm" "$sc" "$ref_spp"
