@@ -5,7 +5,7 @@ set -euo pipefail
 # fluid: Debian's FLTK CMake package config names /usr/bin/fluid and stops find_package(FLTK) without it,
 # although whitted never runs fluid; libfltk1.3-dev only recommends it.
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libcli11-dev libgtest-dev libgmock-dev
-          libbenchmark-dev libfltk1.3-dev fluid)
+          libbenchmark-dev libfltk1.3-dev fluid libopenexr-dev)
 if [[ "${1:-}" == "--viewer-test" ]]; then packages+=(xvfb x11-apps imagemagick xdotool); fi
 
 missing=()

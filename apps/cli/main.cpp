@@ -65,23 +65,29 @@ int run(int argc, char** argv) {
     bool lenient = false, quiet = false, stats = false;
     std::vector<std::string> texture_dirs;
     app.add_option("scene", scene_path, "Scene file (.sc); without one, renders the bundled showcase");
-    app.add_option("-o,--output", output, "Output image: .png (default), .bmp, .ppm, .jpg");
+    app.add_option("-o,--output", output,
+                   "Output image: .png (default), .bmp, .ppm, .jpg; .exr or .pfm keep linear, unclamped values");
     app.add_option("--width", width, "Image width in pixels")->check(CLI::Range(1, 32768));
     app.add_option("--height", height, "Image height in pixels")->check(CLI::Range(1, 32768));
-    app.add_option("--max-depth", max_depth, "Recursion limit for reflection/refraction (camera ray = 0)")
+    auto* depth_option = app.add_option("--max-depth", max_depth,
+                                        "Recursion limit for reflection/refraction (camera ray = 0); in path mode the "
+                                        "bounces of a path (default 64 there)")
         ->check(CLI::Range(0, 1000));
     app.add_option("--aa", aa, "Anti-aliasing: N x N rays per pixel, averaged (1 = one ray through the centre)")
         ->check(CLI::Range(1, Sampler::kMaxAa));
-    app.add_option("--spp", spp,
+    auto* spp_option = app.add_option("--spp", spp,
                    "Samples per pixel (per sub-pixel with --aa N: N x N x spp in all) for soft shadows, depth of "
-                   "field and gloss; 1 = the pixel, lens and light centres")
+                   "field and gloss; 1 = the pixel, lens and light centres (default 64 in path mode)")
         ->check(CLI::Range(1, Sampler::kMaxSpp));
     app.add_option("--aa-threshold", aa_threshold,
                    "Adaptive anti-aliasing: supersample only pixels whose colour differs from a neighbour's by more "
                    "than this (0-1, per channel); 0 = every pixel")
         ->check(CLI::Range(0.0f, 1.0f))
         ->check(finite_number);
-    app.add_option("--mode", mode_name, "Render mode")->check(CLI::IsMember({"whitted", "raycast", "normals", "depth"}));
+    app.add_option("--mode", mode_name,
+                   "Render mode: whitted (the lab's model), path (physically based path tracing), raycast, normals, "
+                   "depth")
+        ->check(CLI::IsMember({"whitted", "path", "raycast", "normals", "depth"}));
     app.add_option("--threads", threads, "Worker threads (0 = all hardware threads)")->check(CLI::Range(0, 1024));
     app.add_option("--texture-path", texture_dirs, "Extra directory to look for textures in (repeatable)")
         ->default_str("");
@@ -97,6 +103,11 @@ int run(int argc, char** argv) {
         return code == 0 ? 0 : kExitUsage;
     }
 
+    const RenderMode mode = *parse_render_mode(mode_name);
+    if (mode == RenderMode::Path) {  // §9.2: a path tracer's defaults
+        if (spp_option->count() == 0) spp = 64;
+        if (depth_option->count() == 0) max_depth = 64;
+    }
     if (aa_threshold > 0.0f && spp > 1) {
         std::cerr << "whitted: error: --aa-threshold compares the colours of pixel centres, which --spp > 1 does not "
                      "take; use --aa-threshold with --spp 1, or --spp alone\n";
@@ -123,6 +134,8 @@ int run(int argc, char** argv) {
     load_options.textures.missing = missing == "checker" ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
     LoadResult loaded = load_scene(scene_path, load_options);
     int warnings = 0;
+    if (mode == RenderMode::Path)
+        loaded.diagnostics.insert(loaded.diagnostics.end(), loaded.path_warnings.begin(), loaded.path_warnings.end());
     for (const Diagnostic& d : loaded.diagnostics)
         if (d.severity == Severity::Error || ++warnings <= kMaxWarningsShown) std::cerr << d.str() << "\n";
     if (warnings > kMaxWarningsShown)
@@ -141,18 +154,21 @@ int run(int argc, char** argv) {
     RenderJob job;
     job.width = width;
     job.height = height;
-    job.integrator = {*parse_render_mode(mode_name), max_depth};
+    job.integrator = {mode, max_depth};
     job.sampling = {aa, spp, aa_threshold};
     job.threads = threads;
     job.cancel = &cli::interrupt_flag();
     cli::ProgressLine progress(job.tile_count(), !quiet && isatty(STDERR_FILENO));
     job.on_tile = [&](const Tile&) { progress.tile_done(); };
 
-    Image image(width, height);
-    RenderStats rs = render(*loaded.scene, job, image);
+    const auto integrator = make_integrator(*loaded.scene, job.camera_for(*loaded.scene), job.integrator);
+    Film film(width, height);
+    RenderStats rs = render(*integrator, job, film);
     progress.finish();
 
-    if (std::string err = write_image(image, output); !err.empty()) {
+    const std::string err = is_linear_output(output) ? write_linear_image(film.to_linear(), output)
+                                                     : write_image(film.to_image(), output);
+    if (!err.empty()) {
         std::cerr << "whitted: error: " << err << "\n";
         return kExitIo;
     }
@@ -161,12 +177,14 @@ int run(int argc, char** argv) {
         std::fprintf(stderr,
                      "objects %zu, lights %zu, textures %zu; %d samples per pixel\n"
                      "parse %.3fs, flatten %.3fs, textures %.3fs, build %.3fs, render %.3fs (%d threads)\n"
-                     "rays: camera %llu, reflected %llu, refracted %llu, shadow %llu; %.2f Mrays/s\n",
+                     "rays: camera %llu, reflected %llu, refracted %llu, shadow %llu; %.2f Mrays/s\n"
+                     "samples rejected (not finite, counted as black): %llu\n",
                      ls.objects, ls.lights, ls.textures, job.sampling.samples_per_pixel(), ls.parse_seconds,
                      ls.flatten_seconds, ls.texture_seconds, ls.build_seconds, rs.seconds, rs.threads,
                      (unsigned long long)rs.rays.camera, (unsigned long long)rs.rays.reflected,
                      (unsigned long long)rs.rays.refracted, (unsigned long long)rs.rays.shadow,
-                     rs.seconds > 0 ? double(rs.rays.total()) / rs.seconds * 1e-6 : 0.0);
+                     rs.seconds > 0 ? double(rs.rays.total()) / rs.seconds * 1e-6 : 0.0,
+                     (unsigned long long)rs.rays.rejected);
     }
     if (rs.cancelled) {
         std::cerr << "whitted: interrupted: wrote the " << rs.tiles_done << " of " << rs.tiles_total

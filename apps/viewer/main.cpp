@@ -69,11 +69,12 @@ int main(int argc, char** argv) {
     app.add_option("--width", o.settings.width, "Image width in pixels")->check(CLI::Range(1, 32768));
     app.add_option("--height", o.settings.height, "Image height in pixels")->check(CLI::Range(1, 32768));
     app.add_flag("--fit", o.fit_window, "Render at the size of the image area");
-    app.add_option("--max-depth", o.settings.integrator.max_depth, "Recursion limit for reflection/refraction")
+    auto* depth_option = app.add_option("--max-depth", o.settings.integrator.max_depth,
+                                        "Recursion limit for reflection/refraction (path mode: bounces, default 64)")
         ->check(CLI::Range(0, 1000));
     app.add_option("--aa", o.settings.sampling.aa, "Anti-aliasing: N x N rays per pixel, averaged")
         ->check(CLI::Range(1, Sampler::kMaxAa));
-    app.add_option("--spp", o.settings.sampling.spp,
+    auto* spp_option = app.add_option("--spp", o.settings.sampling.spp,
                    "Samples per pixel (per sub-pixel with --aa) for soft shadows, depth of field and gloss; they "
                    "arrive in passes")
         ->check(CLI::Range(1, Sampler::kMaxSpp));
@@ -83,7 +84,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Validator(
             [](std::string& s) { return std::isfinite(std::strtof(s.c_str(), nullptr)) ? "" : "not a finite number: " + s; },
             "FINITE"));
-    app.add_option("--mode", mode_name, "Render mode")->check(CLI::IsMember({"whitted", "raycast", "normals", "depth"}));
+    app.add_option("--mode", mode_name, "Render mode (path: physically based path tracing)")
+        ->check(CLI::IsMember({"whitted", "raycast", "normals", "depth", "path"}));
     app.add_option("--threads", o.settings.threads, "Worker threads (0 = all hardware threads)")
         ->check(CLI::Range(0, 1024));
     app.add_flag("--watch", o.watch, "Reload and render again when the scene file changes on disk");
@@ -120,6 +122,10 @@ int main(int argc, char** argv) {
     }
     if (!o.screenshot.empty()) o.exit_when_done = true;
     o.settings.integrator.mode = *parse_render_mode(mode_name);
+    if (o.settings.integrator.mode == RenderMode::Path) {  // §9.2: a path tracer's defaults
+        if (spp_option->count() == 0) o.settings.sampling.spp = 64;
+        if (depth_option->count() == 0) o.settings.integrator.max_depth = 64;
+    }
     o.checker_textures = missing == "checker";
 
     install_signal_thread();

@@ -33,7 +33,8 @@ namespace fs = std::filesystem;
 std::atomic<bool> g_quit_requested{false};
 
 constexpr int kMenuH = 25, kToolH = 34, kStatusH = 24, kMessagesH = 110;
-constexpr const char* kModes[] = {"whitted", "raycast", "normals", "depth"};
+// In RenderMode's order.
+constexpr const char* kModes[] = {"whitted", "raycast", "normals", "depth", "path"};
 
 std::string base_name(const std::string& path) { return fs::path(path).filename().string(); }
 
@@ -205,7 +206,8 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     mode_ = new Fl_Choice(0, 0, 90, h, "Mode");
     for (const char* m : kModes) mode_->add(m);
     mode_->value(int(options.settings.integrator.mode));
-    mode_->tooltip("whitted: full lighting; raycast: unlit colour; normals, depth: debugging views");
+    mode_->tooltip("whitted: the lab's lighting; raycast: unlit colour; normals, depth: debugging views; path: "
+                   "physically based path tracing (set SPP to 64 or more)");
     tool(mode_, "mode", 10);
     aa_ = spinner("aa", "AA", 10, 44, 1, Sampler::kMaxAa, options.settings.sampling.aa,
                   "Anti-aliasing: N x N rays per pixel, averaged (1 = one ray through the pixel centre)");

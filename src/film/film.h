@@ -56,6 +56,8 @@ public:
 
     // The 8-bit image of the whole film (pixels outside the region black): ⌊255·clamp(v) + 0.5⌋.
     Image to_image() const;
+    // The mean colours unclamped (pixels outside the region black).
+    LinearImage to_linear() const;
     // Writes the 8-bit values of the pixels of `r` into `image` (of the film's size).
     void write_to(Image& image, const PixelRegion& r) const;
 

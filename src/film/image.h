@@ -19,6 +19,13 @@ struct Image {
     }
 };
 
+// A linear floating-point RGB image (radiance as rendered, unclamped), row 0 at the top: what
+// .exr and .pfm files keep.
+struct LinearImage {
+    int width = 0, height = 0;
+    std::vector<glm::vec3> rgb;  // width·height pixels, row-major
+};
+
 // c clamped to [0, 1], NaN mapped to 0: what an 8-bit image can show.
 inline float clamp01(float c) { return c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f; }
 

@@ -14,6 +14,8 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include "film/exr_encode.h"
+
 namespace whitted {
 namespace {
 
@@ -79,6 +81,50 @@ struct FileSink {
     }
 };
 
+// PFM: "PF", the size, a negative scale for little-endian floats, then the rows bottom to top.
+bool encode_pfm(const LinearImage& image, FileSink& sink) {
+    static_assert(sizeof(glm::vec3) == 12);
+    const std::string header = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
+    sink.write(header.data(), header.size());
+    for (int y = image.height - 1; y >= 0; --y)
+        sink.write(&image.rgb[std::size_t(y) * std::size_t(image.width)], std::size_t(image.width) * sizeof(glm::vec3));
+    return sink.ok;
+}
+
+// Writes the encoded image to a temporary file beside `path` and renames it over `path` once every
+// byte is on the disk. encode(sink) returns false if the image could not be encoded.
+template <class Encode>
+std::string write_atomically(const std::string& path, Encode&& encode) {
+    // Same directory as the target, so that the rename is atomic; a random suffix keeps
+    // concurrent writers apart. The extension stays last for readers that sniff it.
+    std::random_device rd;
+    const std::string tmp = path + ".tmp" + std::to_string(rd() % 1000000) + extension_of(path);
+    const WritingGuard guard(tmp);
+    FileSink sink(tmp);
+    const bool encoded = sink.ok && encode(sink);
+    const bool ok = sink.close() && encoded;
+    const int error = sink.error;
+    std::error_code ec;
+    if (!ok) {
+        std::filesystem::remove(tmp, ec);
+        return "cannot write '" + path + "': " + (error ? std::strerror(error) : "the image could not be encoded");
+    }
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        return "cannot write '" + path + "': " + ec.message();
+    }
+    return "";
+}
+
+LinearImage to_linear(const Image& image) {
+    LinearImage out{image.width, image.height, std::vector<glm::vec3>(std::size_t(image.width) * std::size_t(image.height))};
+    for (std::size_t i = 0; i < out.rgb.size(); ++i)
+        out.rgb[i] = glm::vec3(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2]) / 255.0f;
+    return out;
+}
+
 bool encode(const Image& image, const std::string& ext, FileSink& sink) {
     const int w = image.width, h = image.height;
     const auto* px = image.rgb.data();
@@ -101,14 +147,19 @@ bool encode(const Image& image, const std::string& ext, FileSink& sink) {
 
 }  // namespace
 
+bool is_linear_output(const std::string& path) {
+    const std::string ext = extension_of(path);
+    return ext == ".exr" || ext == ".pfm";
+}
+
 bool is_supported_output(const std::string& path) {
     std::string ext = extension_of(path);
-    return ext == ".png" || ext == ".bmp" || ext == ".ppm" || ext == ".jpg" || ext == ".jpeg";
+    return ext == ".png" || ext == ".bmp" || ext == ".ppm" || ext == ".jpg" || ext == ".jpeg" || is_linear_output(path);
 }
 
 std::string output_problem(int width, int height, const std::string& path) {
     if (!is_supported_output(path))
-        return "cannot write '" + path + "': unknown image format (use .png, .bmp, .ppm, .jpg or .jpeg)";
+        return "cannot write '" + path + "': unknown image format (use .png, .bmp, .ppm, .jpg, .jpeg, .exr or .pfm)";
     if (width <= 0 || height <= 0) return "cannot write '" + path + "': the image is empty";
     const std::string ext = extension_of(path);
     // stb's PNG and BMP writers count the whole file in an int (and JPEG its size in 16 bits).
@@ -123,30 +174,28 @@ std::string output_problem(int width, int height, const std::string& path) {
 
 std::string write_image(const Image& image, const std::string& path) {
     if (std::string problem = output_problem(image.width, image.height, path); !problem.empty()) return problem;
-    const std::string ext = extension_of(path);
     if (image.rgb.size() != std::size_t(image.width) * std::size_t(image.height) * 3)
         return "cannot write '" + path + "': the image's pixels do not match its size";
-    // Same directory as the target, so that the rename is atomic; a random suffix keeps
-    // concurrent writers apart. The extension stays last for readers that sniff it.
-    std::random_device rd;
-    const std::string tmp = path + ".tmp" + std::to_string(rd() % 1000000) + ext;
-    const WritingGuard guard(tmp);
-    FileSink sink(tmp);
-    const bool encoded = sink.ok && encode(image, ext, sink);
-    const bool ok = sink.close() && encoded;
-    const int error = sink.error;
-    std::error_code ec;
-    if (!ok) {
-        std::filesystem::remove(tmp, ec);
-        return "cannot write '" + path + "': " + (error ? std::strerror(error) : "the image could not be encoded");
+    if (is_linear_output(path)) return write_linear_image(to_linear(image), path);
+    const std::string ext = extension_of(path);
+    return write_atomically(path, [&](FileSink& sink) { return encode(image, ext, sink); });
+}
+
+std::string write_linear_image(const LinearImage& image, const std::string& path) {
+    if (std::string problem = output_problem(image.width, image.height, path); !problem.empty()) return problem;
+    if (image.rgb.size() != std::size_t(image.width) * std::size_t(image.height))
+        return "cannot write '" + path + "': the image's pixels do not match its size";
+    if (!is_linear_output(path)) {
+        Image bytes(image.width, image.height);
+        for (std::size_t i = 0; i < image.rgb.size(); ++i)
+            for (int c = 0; c < 3; ++c) bytes.rgb[3 * i + std::size_t(c)] = to_byte(image.rgb[i][c]);
+        return write_image(bytes, path);
     }
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::error_code ignored;
-        std::filesystem::remove(tmp, ignored);
-        return "cannot write '" + path + "': " + ec.message();
-    }
-    return "";
+    const bool exr = extension_of(path) == ".exr";
+    return write_atomically(path, [&](FileSink& sink) {
+        return exr ? encode_exr(image, sink.file) && (std::fflush(sink.file) == 0 || (sink.ok = false, sink.error = errno, false))
+                   : encode_pfm(image, sink);
+    });
 }
 
 const char* image_file_being_written() {

@@ -6,7 +6,8 @@
 
 namespace whitted {
 
-// Writes PNG (default), BMP, PPM (binary P6) or JPEG by the file's extension (case-insensitive).
+// Writes PNG (default), BMP, PPM (binary P6) or JPEG by the file's extension (case-insensitive);
+// .exr and .pfm get the 8-bit values as linear floats (value / 255).
 // The image goes to a temporary file beside the target, which is renamed over it only when
 // complete, so a failure never leaves a half-written image. Returns "" or an error message.
 std::string write_image(const Image& image, const std::string& path);
@@ -20,8 +21,15 @@ const char* image_file_being_written();
 // the format cannot hold), or "": a frontend asks before spending a render on it.
 std::string output_problem(int width, int height, const std::string& path);
 
-// True for the extensions write_image understands (.png .bmp .ppm .jpg .jpeg).
+// True for the extensions write_image understands (.png .bmp .ppm .jpg .jpeg .exr .pfm).
 bool is_supported_output(const std::string& path);
+
+// True for the formats that keep linear floating-point values (.exr .pfm).
+bool is_linear_output(const std::string& path);
+
+// Writes OpenEXR (float RGB) or PFM by the extension, atomically as write_image does. The 8-bit
+// formats get the image clamped and converted as §7 says. Returns "" or an error message.
+std::string write_linear_image(const LinearImage& image, const std::string& path);
 
 // Reads any format stb_image reads into 8-bit RGB. Returns "" or an error message.
 std::string read_image(const std::string& path, Image& out);

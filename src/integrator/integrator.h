@@ -46,7 +46,7 @@ protected:
 
 struct IntegratorSettings {
     RenderMode mode = RenderMode::Whitted;
-    int max_depth = 5;  // camera ray = depth 0; no ray deeper than this is traced
+    int max_depth = 5;  // camera ray = depth 0; no ray deeper than this is traced (path: bounces)
 };
 
 // The integrator for `settings.mode`, rendering `scene` as seen by `camera`.

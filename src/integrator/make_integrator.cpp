@@ -1,6 +1,7 @@
 // The one place that maps a render mode to its integrator.
 #include "integrator/debug_views.h"
 #include "integrator/integrator.h"
+#include "integrator/path_integrator.h"
 #include "integrator/whitted_integrator.h"
 
 namespace whitted {
@@ -12,6 +13,7 @@ std::unique_ptr<Integrator> make_integrator(const Scene& scene, const Camera& ca
         case RenderMode::Raycast: return std::make_unique<RaycastIntegrator>(scene, camera);
         case RenderMode::Normals: return std::make_unique<NormalsIntegrator>(scene, camera);
         case RenderMode::Depth: return std::make_unique<DepthIntegrator>(scene, camera);
+        case RenderMode::Path: return std::make_unique<PathIntegrator>(scene, camera, settings.max_depth);
     }
     return nullptr;
 }

@@ -7,6 +7,7 @@ std::optional<RenderMode> parse_render_mode(std::string_view name) {
     if (name == "raycast") return RenderMode::Raycast;
     if (name == "normals") return RenderMode::Normals;
     if (name == "depth") return RenderMode::Depth;
+    if (name == "path") return RenderMode::Path;
     return std::nullopt;
 }
 
@@ -16,6 +17,7 @@ const char* render_mode_name(RenderMode mode) {
         case RenderMode::Raycast: return "raycast";
         case RenderMode::Normals: return "normals";
         case RenderMode::Depth: return "depth";
+        case RenderMode::Path: return "path";
     }
     return "?";
 }

@@ -11,7 +11,8 @@ Surface surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
     const glm::vec3 p = object_ray.at(hit.t);
     Surface s;
     s.point = ray.at(hit.t);
-    s.normal = normal_to_world(inst, unit_shape_normal(inst.kind, hit.part, p));
+    s.object_normal = unit_shape_normal(inst.kind, hit.part, p);
+    s.normal = normal_to_world(inst, s.object_normal);
     s.uv = unit_shape_uv(inst.kind, hit.part, p);
     s.material = &scene.flat.materials[inst.material];
     s.diffuse = s.material->diffuse;

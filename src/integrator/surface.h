@@ -9,6 +9,7 @@ namespace whitted {
 struct Surface {
     glm::vec3 point;      // world space
     glm::vec3 normal;     // world space, unit, outward
+    glm::vec3 object_normal;  // the unit shape's outward normal there, in object space
     glm::vec2 uv;         // texture coordinates of the unit shape (spec §8)
     const Material* material;
     glm::vec3 diffuse;    // material diffuse × texel

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "flatten/flatten.h"
+#include "integrator/path_integrator.h"
 
 namespace whitted {
 namespace {
@@ -30,6 +31,10 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     result.missing_textures = load_textures(flat, parsed.scene.path, options.textures, result.diagnostics);
     result.stats.texture_seconds = since(t);
     if (has_errors(result.diagnostics) || cancelled()) return result;
+
+    std::vector<SourceLoc> sources;
+    for (const ObjectDesc* o : flat.material_sources) sources.push_back(o->loc);
+    result.path_warnings = path_mode_warnings(flat.scene, sources);
 
     t = Clock::now();
     result.stats.objects = flat.scene.instances.size();

@@ -28,6 +28,7 @@ struct LoadResult {
     std::shared_ptr<const Scene> scene;     // null when the load failed
     std::vector<Diagnostic> diagnostics;     // warnings and errors, in order
     std::vector<MissingTexture> missing_textures;  // also reported in diagnostics
+    std::vector<Diagnostic> path_warnings;   // warnings that hold only in --mode path (§9.2)
     LoadStats stats;
     bool cancelled = false;   // LoadOptions::cancel was set: no scene, no error
     bool unreadable = false;  // the scene file could not be read (an I/O failure, not a bad scene)

@@ -2,6 +2,7 @@
 // One render, described once: what the frontends (CLI, viewer; MPI ranks later) ask of the
 // renderer. The image size, the part of it to render, which samples, how, and how to report.
 #include <atomic>
+#include <cstdint>
 #include <functional>
 #include <optional>
 
@@ -22,6 +23,7 @@ struct SamplingSettings {
     // differs from one of its four neighbours' by more than this in some channel (colours clamped
     // to [0, 1]) get their aa × aa samples, the others keep their centre. 0 = every pixel.
     float aa_threshold = 0.0f;
+    std::uint32_t seed = 0;  // another seed, other (equally good) sample values: independent renders
     int samples_per_pixel() const { return Sampler(aa, spp).samples_per_pixel(); }
     bool adaptive() const { return aa > 1 && spp == 1 && aa_threshold > 0.0f; }
 };

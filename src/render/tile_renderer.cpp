@@ -12,7 +12,7 @@ glm::vec3 clamped(const glm::vec3& c) { return {clamp01(c.x), clamp01(c.y), clam
 
 TileRenderer::TileRenderer(const Integrator& integrator, const RenderJob& job)
     : integrator_(integrator), job_(job), camera_(integrator.camera()),
-      sampler_(job.sampling.aa, job.sampling.spp), clamp_(integrator.clamps_samples()) {
+      sampler_(job.sampling.aa, job.sampling.spp, job.sampling.seed), clamp_(integrator.clamps_samples()) {
     const int n = sampler_.samples_per_pixel();
     s0_ = std::clamp(job.sampling.adaptive() ? 0 : job.sample_begin, 0, n);
     s1_ = job.sampling.adaptive() || job.sample_end < 0 ? n : std::clamp(job.sample_end, s0_, n);
@@ -26,7 +26,14 @@ TileRenderer::TileRenderer(const Integrator& integrator, const RenderJob& job)
 
 bool TileRenderer::stop_requested() const { return job_.cancel && job_.cancel->load(std::memory_order_relaxed); }
 
-glm::vec3 TileRenderer::displayed(const glm::vec3& c) const { return clamp_ ? clamped(c) : c; }
+glm::vec3 TileRenderer::displayed(const glm::vec3& c) {
+    if (clamp_) return clamped(c);  // §7's conversion per sample: NaN → 0, +inf → 1
+    if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
+        ++counts_.rejected;  // never a NaN or infinite pixel: the sample counts as black
+        return glm::vec3(0.0f);
+    }
+    return c;
+}
 
 Ray TileRenderer::camera_ray(const Sampler& sampler, int x, int y, std::uint32_t index) const {
     const SampleKey key{std::uint32_t(x), std::uint32_t(y), index};

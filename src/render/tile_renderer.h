@@ -33,7 +33,9 @@ public:
 
 private:
     bool stop_requested() const;
-    glm::vec3 displayed(const glm::vec3& c) const;
+    // The colour a sample adds to the film: clamped if the integrator asks for it; otherwise a
+    // sample that is not finite is counted and adds black.
+    glm::vec3 displayed(const glm::vec3& c);
     // Camera ray of sample `index` of pixel (x, y), drawn from `sampler`.
     Ray camera_ray(const Sampler& sampler, int x, int y, std::uint32_t index) const;
     // The colours of sample `index` of rows [y0, y0 + kPacketHeight) of `region`, from `sampler`,

@@ -33,6 +33,10 @@ constexpr std::uint32_t kLens = 1;  // the point on the lens
 inline std::uint32_t light(int depth, std::uint32_t light) { return 16u + std::uint32_t(depth) * 0x10000u + 2u + light; }
 inline std::uint32_t gloss_reflect(int depth) { return 16u + std::uint32_t(depth) * 0x10000u; }
 inline std::uint32_t gloss_refract(int depth) { return 16u + std::uint32_t(depth) * 0x10000u + 1u; }
+// The path tracer, at bounce `bounce`: which light and Russian roulette; the point on the light;
+// which BSDF lobe; the BSDF direction.
+inline std::uint32_t path(int bounce, std::uint32_t slot) { return 0x80000000u + std::uint32_t(bounce) * 8u + slot; }
+constexpr std::uint32_t kPathChoice = 0, kPathLightPoint = 1, kPathLobe = 2, kPathDirection = 3;
 }  // namespace dimension
 
 class Sampler {

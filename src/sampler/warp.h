@@ -56,4 +56,12 @@ inline glm::vec3 cosine_power_lobe(const glm::vec3& axis, float e, glm::vec2 u) 
     return around_axis(axis, std::pow(1.0f - u.x, 1.0f / (e + 1.0f)), u.y);
 }
 
+// Cosine-weighted over the hemisphere about unit n (pdf cos θ / π): the disc lifted (Malley's method).
+inline glm::vec3 cosine_hemisphere(const glm::vec3& n, glm::vec2 u) {
+    const glm::vec2 d = concentric_disc(u);
+    glm::vec3 t, b;
+    orthonormal_basis(n, t, b);
+    return d.x * t + d.y * b + std::sqrt(std::max(0.0f, 1.0f - glm::dot(d, d))) * n;
+}
+
 }  // namespace whitted

@@ -1,0 +1,53 @@
+#include "film/exr_encode.h"
+
+#include <cstdint>
+#include <exception>
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIO.h>
+#include <OpenEXR/ImfOutputFile.h>
+
+namespace whitted {
+namespace {
+
+// OpenEXR's output stream over a C file (it seeks back to fill in the line offsets at the end).
+class FileStream : public Imf::OStream {
+public:
+    explicit FileStream(std::FILE* f) : Imf::OStream("whitted output"), f_(f) {}
+    void write(const char c[], int n) override {
+        if (std::fwrite(c, 1, std::size_t(n), f_) != std::size_t(n)) throw std::runtime_error("write failed");
+    }
+    std::uint64_t tellp() override { return std::uint64_t(ftello(f_)); }
+    void seekp(std::uint64_t pos) override {
+        if (fseeko(f_, off_t(pos), SEEK_SET) != 0) throw std::runtime_error("seek failed");
+    }
+
+private:
+    std::FILE* f_;
+};
+
+}  // namespace
+
+bool encode_exr(const LinearImage& image, std::FILE* file) {
+    try {
+        FileStream stream(file);
+        Imf::Header header(image.width, image.height);
+        for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
+        Imf::OutputFile out(stream, header);
+        Imf::FrameBuffer fb;
+        char* base = const_cast<char*>(reinterpret_cast<const char*>(image.rgb.data()));
+        const std::size_t px = sizeof(glm::vec3), row = px * std::size_t(image.width);
+        fb.insert("R", Imf::Slice(Imf::FLOAT, base, px, row));
+        fb.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), px, row));
+        fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), px, row));
+        out.setFrameBuffer(fb);
+        out.writePixels(image.height);
+        return true;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+}  // namespace whitted

@@ -1,0 +1,168 @@
+#include "integrator/path_integrator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "integrator/bsdf.h"
+#include "integrator/light_sample.h"
+#include "integrator/surface.h"
+#include "integrator/whitted_integrator.h"  // surface_offset
+#include "sampler/warp.h"                   // kPi
+
+namespace whitted {
+namespace {
+
+float max_component(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
+
+float power_heuristic(float a, float b) {
+    const float a2 = a * a, b2 = b * b;
+    return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
+}
+
+// A point just off the surface on the side `w` leaves toward.
+glm::vec3 spawn(const glm::vec3& p, const glm::vec3& outward, const glm::vec3& w) {
+    const float off = surface_offset(p);
+    return p + (glm::dot(w, outward) > 0.0f ? off : -off) * outward;
+}
+
+}  // namespace
+
+struct PathIntegrator::Vertex {
+    Surface s;
+    Bsdf bsdf;
+    glm::vec3 wo;
+};
+
+PathIntegrator::PathIntegrator(const Scene& scene, const Camera& camera, int max_bounces)
+    : Integrator(scene, camera), max_bounces_(max_bounces), lights_(scene) {}
+
+void PathIntegrator::radiance(const CameraBatch& batch, const Sampler& sampler, glm::vec3 (&out)[kPacketSize],
+                              RayCounts& counts) const {
+    Hit hits[kPacketSize];
+    const unsigned found = scene_.intersect(batch.rays, batch.active, hits);
+    for (int l = 0; l < kPacketSize; ++l)
+        if ((batch.active >> l) & 1)
+            out[l] = radiance(batch.rays[l], batch.keys[l], sampler, counts, (found >> l) & 1 ? &hits[l] : nullptr, true);
+}
+
+// Light arriving at vertex v from one light chosen by power, times the BSDF and the cosine, divided
+// by the densities (and weighted against BSDF sampling for area lights).
+glm::vec3 PathIntegrator::next_event(const Vertex& v, int bounce, const SampleKey& key, const Sampler& sampler,
+                                     RayCounts& counts) const {
+    if (lights_.empty() || !v.bsdf.has_non_delta()) return glm::vec3(0.0f);
+    const glm::vec2 choice = sampler.get2d(key, dimension::path(bounce, dimension::kPathChoice));
+    const glm::vec2 u = sampler.get2d(key, dimension::path(bounce, dimension::kPathLightPoint));
+    float prob;
+    const PathLight& pick = lights_.choose(choice.x, prob);
+    const glm::vec3 x = v.s.point;
+
+    if (pick.instance >= 0) {
+        const AreaLightSample ls = lights_.sample_area(std::uint32_t(pick.instance), u);
+        glm::vec3 to = ls.point - x;
+        const float d2 = glm::dot(to, to), d = std::sqrt(d2);
+        if (!(d > 0.0f)) return glm::vec3(0.0f);
+        to /= d;
+        const float cos_light = std::abs(glm::dot(ls.normal, to));
+        if (!(cos_light > 0.0f)) return glm::vec3(0.0f);
+        const glm::vec3 f = v.bsdf.f(to);
+        const float cos_x = std::abs(glm::dot(v.bsdf.normal(), to));
+        if (max_component(f) <= 0.0f || !(cos_x > 0.0f)) return glm::vec3(0.0f);
+        const float pdf_light = prob * ls.pdf_area * d2 / cos_light;  // per unit solid angle at x
+        const glm::vec3 start = spawn(x, v.s.normal, to);
+        ++counts.shadow;
+        if (scene_.occluded(Ray{start, ls.point - start}, 1.0f - 1e-4f)) return glm::vec3(0.0f);
+        const float w = power_heuristic(pdf_light, v.bsdf.pdf(to));
+        return scene_.material(std::uint32_t(pick.instance)).emit * f * (cos_x * w / pdf_light);
+    }
+
+    // A point, spot or directional light: its §6/§9.1 intensity, as the Whitted diffuse term
+    // counts it (π · f · C · att · spot · cos θ), reached by this estimate alone.
+    const Light& light = scene_.flat.lights[std::size_t(pick.light)];
+    const LightSample ls = sampler.centred() || !has_extent(light) ? sample_light(light, x) : sample_light(light, x, u);
+    const float cos_x = std::abs(glm::dot(v.bsdf.normal(), ls.to_light));
+    if (max_component(ls.intensity) <= 0.0f || !(cos_x > 0.0f)) return glm::vec3(0.0f);
+    const glm::vec3 f = v.bsdf.f(ls.to_light);
+    if (max_component(f) <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 start = spawn(x, v.s.normal, ls.to_light);
+    ++counts.shadow;
+    const bool blocked = std::isinf(ls.distance) ? scene_.occluded(Ray{start, ls.to_light}, Scene::kInfinity)
+                                                 : scene_.occluded(Ray{start, ls.position - start}, 1.0f - 1e-4f);
+    if (blocked) return glm::vec3(0.0f);
+    return kPi * f * ls.intensity * (cos_x / prob);
+}
+
+glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, const Sampler& sampler,
+                                   RayCounts& counts, const Hit* first, bool first_known) const {
+    ++counts.camera;
+    glm::vec3 radiance(0.0f), beta(1.0f);
+    Ray ray = camera_ray;
+    bool delta_before = true;  // the camera, or a delta lobe: emission seen is counted whole
+    float bsdf_pdf = 0.0f;     // of the direction that led here (non-delta)
+    glm::vec3 from(0.0f);
+    for (int bounce = 0;; ++bounce) {
+        Hit hit;
+        const bool found = bounce == 0 && first_known ? first != nullptr : scene_.intersect(ray, hit);
+        if (bounce == 0 && first_known && first) hit = *first;
+        if (!found) {
+            radiance += beta * scene_.flat.background;  // the uniform environment
+            break;
+        }
+        const Surface s = surface_at(scene_, ray, hit);
+        const Material& m = *s.material;
+        const glm::vec3 wo = -glm::normalize(ray.direction);
+        if (max_component(m.emit) > 0.0f) {
+            if (delta_before) {
+                radiance += beta * m.emit;
+            } else {
+                // The same light could have been found by next-event estimation: weigh the two.
+                const glm::vec3 to = s.point - from;
+                const float d2 = glm::dot(to, to);
+                const float cos_light = std::abs(glm::dot(s.normal, wo));
+                const float pdf_light = lights_.choice_probability(hit.instance) *
+                                        lights_.pdf_area(hit.instance, s.object_normal) * d2 / std::max(cos_light, 1e-12f);
+                radiance += beta * m.emit * power_heuristic(bsdf_pdf, pdf_light);
+            }
+        }
+        if (bounce >= max_bounces_) break;
+
+        const Vertex v{s, Bsdf(m, s.diffuse, s.normal, wo), wo};
+        if (v.bsdf.black()) break;
+        radiance += beta * next_event(v, bounce, key, sampler, counts);
+
+        const glm::vec2 lobe = sampler.get2d(key, dimension::path(bounce, dimension::kPathLobe));
+        const BsdfSample bs = v.bsdf.sample(lobe.x, sampler.get2d(key, dimension::path(bounce, dimension::kPathDirection)));
+        if (!bs.valid || max_component(bs.weight) <= 0.0f) break;
+        beta *= bs.weight;
+        delta_before = bs.delta;
+        bsdf_pdf = bs.pdf;
+        from = s.point;
+        ray = Ray{spawn(s.point, s.normal, bs.wi), bs.wi};
+        ++(glm::dot(bs.wi, s.normal) * glm::dot(wo, s.normal) >= 0.0f ? counts.reflected : counts.refracted);
+
+        // Russian roulette after the third bounce: a path whose weight has fallen goes on with
+        // probability equal to its weight, and carries 1/that when it does.
+        if (bounce >= 2) {
+            const float q = max_component(beta);
+            if (q < 1.0f) {
+                if (sampler.get2d(key, dimension::path(bounce, dimension::kPathChoice)).y >= q) break;
+                beta /= q;
+            }
+        }
+    }
+    return radiance;
+}
+
+std::vector<Diagnostic> path_mode_warnings(const FlatScene& scene, const std::vector<SourceLoc>& sources) {
+    std::vector<Diagnostic> out;
+    for (std::size_t i = 0; i < scene.materials.size() && i < sources.size(); ++i) {
+        const float s = energy_scale(scene.materials[i]);
+        if (s < 1.0f)
+            out.push_back({Severity::Warning, sources[i],
+                           "in path mode this material's diffuse + specular + reflect + transparent exceeds 1 (up to " +
+                               std::to_string(1.0f / s) + "); the four are scaled down by that, so that no surface "
+                               "creates light"});
+    }
+    return out;
+}
+
+}  // namespace whitted

@@ -1,0 +1,41 @@
+#pragma once
+// Unidirectional path tracing (scene-format.md §9.2): at every vertex, next-event estimation of
+// one light chosen by power and one direction drawn from the BSDF, combined by multiple importance
+// sampling (power heuristic) where both could have found the light; Russian roulette after the
+// third bounce. Emissive shapes are area lights, point/spot/directional lights are reached only by
+// next-event estimation, and the background is a uniform environment seen by rays that escape.
+#include <vector>
+
+#include "integrator/integrator.h"
+#include "integrator/path_lights.h"
+#include "parse/diagnostic.h"
+
+namespace whitted {
+
+class PathIntegrator final : public Integrator {
+public:
+    // max_bounces: path vertices after the camera's (1 = direct light only).
+    PathIntegrator(const Scene& scene, const Camera& camera, int max_bounces);
+
+    void radiance(const CameraBatch& batch, const Sampler& sampler, glm::vec3 (&out)[kPacketSize],
+                  RayCounts& counts) const override;
+    bool clamps_samples() const override { return false; }  // radiance, averaged as it is
+
+    // One camera ray on its own (nullptr first: find its first hit here).
+    glm::vec3 radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler, RayCounts& counts,
+                       const Hit* first = nullptr, bool first_known = false) const;
+
+private:
+    struct Vertex;
+    glm::vec3 next_event(const Vertex& v, int bounce, const SampleKey& key, const Sampler& sampler,
+                         RayCounts& counts) const;
+
+    int max_bounces_;
+    PathLights lights_;
+};
+
+// Warnings that hold only in path mode: materials whose weights sum above 1 in some channel and are
+// scaled down (§9.2). `sources[i]` is material i's object block.
+std::vector<Diagnostic> path_mode_warnings(const FlatScene& scene, const std::vector<SourceLoc>& sources);
+
+}  // namespace whitted

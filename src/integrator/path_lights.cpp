@@ -1,0 +1,95 @@
+#include "integrator/path_lights.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "accel/instance_geometry.h"
+#include "sampler/warp.h"
+#include "shapes/unit_shape_sampling.h"
+
+namespace whitted {
+namespace {
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
+// |det W| of the world→object rows: 1 / |det M|.
+float det_world_to_object(const Instance& inst) {
+    const glm::vec4* w = inst.world_to_object;
+    return std::abs(glm::dot(glm::vec3(w[0]), glm::cross(glm::vec3(w[1]), glm::vec3(w[2]))));
+}
+
+// The world area of an object-space area element with normal n: |det M| · |M⁻ᵀ n| (M⁻ᵀ = Wᵀ).
+float area_scale(const Instance& inst, const glm::vec3& n_object) {
+    const glm::vec4* w = inst.world_to_object;
+    const glm::vec3 t = n_object.x * glm::vec3(w[0]) + n_object.y * glm::vec3(w[1]) + n_object.z * glm::vec3(w[2]);
+    return glm::length(t) / det_world_to_object(inst);
+}
+
+}  // namespace
+
+float PathLights::world_area(const Instance& inst) {
+    // Midpoint quadrature over the square of sample_unit_shape: the area element is constant on
+    // flat parts and smooth on curved ones.
+    constexpr int k = 48;
+    double sum = 0;
+    for (int i = 0; i < k; ++i)
+        for (int j = 0; j < k; ++j) {
+            const ShapeSample s = sample_unit_shape(inst.kind, {(float(i) + 0.5f) / k, (float(j) + 0.5f) / k});
+            sum += area_scale(inst, unit_shape_normal(inst.kind, s.part, s.p));
+        }
+    return float(sum / (k * k) * unit_shape_area(inst.kind));
+}
+
+PathLights::PathLights(const Scene& scene) : scene_(scene) {
+    const FlatScene& flat = scene.flat;
+    std::vector<float> power;
+    for (std::uint32_t i = 0; i < flat.instances.size(); ++i) {
+        const glm::vec3& e = scene.material(i).emit;
+        if (std::max(e.x, std::max(e.y, e.z)) <= 0.0f) continue;
+        lights_.push_back({std::int32_t(i), -1});
+        power.push_back(std::max(1e-12f, luminance(e) * world_area(flat.instances[i]) * kPi));
+    }
+    const Bounds b = scene.bvh.bounds();
+    const float radius = b.empty() ? 1.0f : 0.5f * glm::length(b.hi - b.lo);
+    for (std::size_t l = 0; l < flat.lights.size(); ++l) {
+        const Light& light = flat.lights[l];
+        const float c = std::max(1e-12f, luminance(light.color));
+        lights_.push_back({-1, std::int32_t(l)});
+        power.push_back(light.type == LightType::Directional ? c * kPi * radius * radius : c * 4.0f * kPi);
+    }
+    double total = 0;
+    for (float p : power) total += p;
+    instance_choice_.assign(flat.instances.size(), 0.0f);
+    double run = 0;
+    for (std::size_t k = 0; k < lights_.size(); ++k) {
+        const float prob = float(power[k] / total);
+        run += power[k] / total;
+        cdf_.push_back(float(run));
+        if (lights_[k].instance >= 0) instance_choice_[std::size_t(lights_[k].instance)] = prob;
+    }
+    if (!cdf_.empty()) cdf_.back() = 1.0f;
+}
+
+const PathLight& PathLights::choose(float u, float& prob) const {
+    const std::size_t k = std::min<std::size_t>(std::size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()),
+                                                cdf_.size() - 1);
+    prob = cdf_[k] - (k ? cdf_[k - 1] : 0.0f);
+    return lights_[k];
+}
+
+float PathLights::choice_probability(std::uint32_t instance) const { return instance_choice_[instance]; }
+
+AreaLightSample PathLights::sample_area(std::uint32_t instance, glm::vec2 u) const {
+    const Instance& inst = scene_.flat.instances[instance];
+    const ShapeSample s = sample_unit_shape(inst.kind, u);
+    const glm::vec3 n_object = unit_shape_normal(inst.kind, s.part, s.p);
+    const glm::mat4 m = object_to_world(inst);
+    return {glm::vec3(m * glm::vec4(s.p, 1.0f)), normal_to_world(inst, n_object), pdf_area(instance, n_object)};
+}
+
+float PathLights::pdf_area(std::uint32_t instance, const glm::vec3& n_object) const {
+    const Instance& inst = scene_.flat.instances[instance];
+    return 1.0f / (unit_shape_area(inst.kind) * area_scale(inst, n_object));
+}
+
+}  // namespace whitted

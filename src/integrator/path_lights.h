@@ -1,0 +1,52 @@
+#pragma once
+// The lights of the path tracer (scene-format.md §9.2): every instance whose material has `emit` is
+// an area light, sampled by area in object space with the density converted through the
+// instance's matrix (exact under any affine map: an object-space area element dA becomes
+// |det M| · |M⁻ᵀ n| dA in the world); point, spot and directional lights by next-event estimation
+// only. One light is chosen per estimate, in proportion to its power.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "accel/scene.h"
+
+namespace whitted {
+
+struct PathLight {
+    std::int32_t instance = -1;  // an area light: the emissive instance; -1: flat.lights[light]
+    std::int32_t light = -1;
+};
+
+struct AreaLightSample {
+    glm::vec3 point;   // on the light, world space
+    glm::vec3 normal;  // its unit outward normal
+    float pdf_area;    // density per unit of world area, given this light was chosen
+};
+
+class PathLights {
+public:
+    explicit PathLights(const Scene& scene);
+
+    bool empty() const { return lights_.empty(); }
+    // Picks a light with probability in proportion to its power; `prob` is that probability.
+    const PathLight& choose(float u, float& prob) const;
+    // The probability of choosing the area light on `instance` (0 if it emits nothing).
+    float choice_probability(std::uint32_t instance) const;
+
+    // A point uniform by object-space area on the instance's shape, and its world-area density.
+    AreaLightSample sample_area(std::uint32_t instance, glm::vec2 u) const;
+    // The world-area density of sample_area at a point of the instance whose object-space normal
+    // is n_object (the same density it sampled with).
+    float pdf_area(std::uint32_t instance, const glm::vec3& n_object) const;
+    // The instance's world surface area (by quadrature of the area element: exact for flat parts).
+    static float world_area(const Instance& inst);
+
+private:
+    const Scene& scene_;
+    std::vector<PathLight> lights_;
+    std::vector<float> cdf_;              // running sum of the choice probabilities
+    std::vector<float> instance_choice_;  // per instance: the probability of choosing it (0 = not a light)
+};
+
+}  // namespace whitted
