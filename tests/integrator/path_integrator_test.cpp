@@ -310,7 +310,9 @@ TEST(Bsdf, EnergyIsNeverCreated) {
         }
         EXPECT_LT(albedo / k, 1.0 + 0.01) << "cos " << c;
         // Head-on, the normalised lobe reflects all it is given: (n + 2)/(2π) ∫ cos^n θ cos θ dω = 1.
-        if (c == 1.0f) EXPECT_NEAR(albedo / k, 1.0, 0.01);
+        if (c == 1.0f) {
+            EXPECT_NEAR(albedo / k, 1.0, 0.01);
+        }
     }
 }
 

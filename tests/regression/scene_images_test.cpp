@@ -198,6 +198,7 @@ TEST(SceneImages, CropsOfSmallFeaturesMatchTheirReferences) {
         ASSERT_LE(c.x + c.w, full.width) << c.name;
         ASSERT_LE(c.y + c.h, full.height) << c.name;
         expect_matches(crop(full, c.x, c.y, c.w, c.h), "crops/" + c.name);
+    }
 }
 
 // The distribution effects (§9.1) need samples: their scenes and the showcase at 16 per pixel.
