@@ -355,7 +355,7 @@ TEST(RenderController, ANewSceneTimeLoadsAgainAndTheDialectIsReported) {
                                         "camera [ eye 0 0 5 focus 0 0 0 ]\nlight [ number 0 position 2 2 5 ]\n"
                                         "trans [ velocity 1 0 0 object sphere [ diffuse 1 0 0 ] ]\n");
     RenderController c;
-    RenderSettings s;
+    RenderJob s;
     s.width = 40;
     s.height = 30;
     LoadOptions at0;
