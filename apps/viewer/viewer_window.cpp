@@ -191,9 +191,10 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
         tool(s, id, gap);
         return s;
     };
-    width_ = spinner("width", "Width", 16, 70, 1, 32768, options.settings.width, "Image width in pixels");
-    height_ = spinner("height", "Height", 10, 70, 1, 32768, options.settings.height, "Image height in pixels");
-    fit_ = new Fl_Check_Button(0, 0, 100, h, "Fit window");
+    // Sized so that every tool fits the default 1000-pixel window.
+    width_ = spinner("width", "Width", 12, 64, 1, 32768, options.settings.width, "Image width in pixels");
+    height_ = spinner("height", "Height", 8, 64, 1, 32768, options.settings.height, "Image height in pixels");
+    fit_ = new Fl_Check_Button(0, 0, 88, h, "Fit window");
     fit_->value(options.fit_window);
     fit_->tooltip("Render at the size of the image area");
     fit_->callback([](Fl_Widget* w, void* v) {
@@ -203,22 +204,22 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
         else self->width_->activate(), self->height_->activate();
     }, this);
     fit_->do_callback();
-    tool(fit_, "fit", 10);
-    depth_ = spinner("depth", "Depth", 8, 52, 0, 1000, options.settings.integrator.max_depth,
+    tool(fit_, "fit", 8);
+    depth_ = spinner("depth", "Depth", 8, 46, 0, 1000, options.settings.integrator.max_depth,
                      "Recursion limit for reflection and refraction (the camera ray is depth 0)");
-    mode_ = new Fl_Choice(0, 0, 90, h, "Mode");
+    mode_ = new Fl_Choice(0, 0, 80, h, "Mode");
     for (const char* m : kModes) mode_->add(m);
     mode_->value(int(options.settings.integrator.mode));
     mode_->tooltip("whitted: the lab's lighting; raycast: unlit colour; normals, depth: debugging views; path: "
                    "physically based path tracing (set SPP to 64 or more)");
-    tool(mode_, "mode", 10);
-    aa_ = spinner("aa", "AA", 10, 44, 1, Sampler::kMaxAa, options.settings.sampling.aa,
+    tool(mode_, "mode", 8);
+    aa_ = spinner("aa", "AA", 8, 40, 1, Sampler::kMaxAa, options.settings.sampling.aa,
                   "Anti-aliasing: N x N rays per pixel, averaged (1 = one ray through the pixel centre)");
-    spp_ = spinner("spp", "SPP", 10, 60, 1, Sampler::kMaxSpp, options.settings.sampling.spp,
+    spp_ = spinner("spp", "SPP", 8, 54, 1, Sampler::kMaxSpp, options.settings.sampling.spp,
                    "Samples per pixel (per anti-aliasing cell) for soft shadows, depth of field and gloss: they "
                    "arrive in passes, the image refining as you watch; Stop keeps the passes done");
     const int hw = int(std::max(1u, std::thread::hardware_concurrency()));
-    threads_ = spinner("threads", "Threads", 10, 52, 1, 1024,
+    threads_ = spinner("threads", "Threads", 8, 46, 1, 1024,
                        options.settings.threads > 0 ? options.settings.threads : hw, "Worker threads");
 
     scroll_ = new Fl_Scroll(0, kMenuH + kToolH, W, 100);
@@ -513,8 +514,12 @@ void ViewerWindow::update_status(const RenderStatus& st) {
                               st.settings.height, pct, st.tiles_done, st.tiles_total, st.elapsed_seconds);
             break;
         case RenderState::Finished:
-            std::snprintf(buf, sizeof buf, "done %d×%d, %d samples/pixel, in %.2f s", st.settings.width,
-                          st.settings.height, st.samples_total, st.elapsed_seconds);
+            if (st.samples_total > 1)
+                std::snprintf(buf, sizeof buf, "done %d×%d, %d samples/pixel, in %.2f s", st.settings.width,
+                              st.settings.height, st.samples_total, st.elapsed_seconds);
+            else
+                std::snprintf(buf, sizeof buf, "done %d×%d in %.2f s", st.settings.width, st.settings.height,
+                              st.elapsed_seconds);
             break;
         case RenderState::Stopped:
             std::snprintf(buf, sizeof buf, "stopped at %d%% (%d/%d tiles, %d of %d samples/pixel complete), %.1f s",

@@ -112,7 +112,8 @@ killed_rank_resume)
         --tile-size 8 --resume "$out/ck" >"$out/log" 2>&1 && fail "a checkpoint of another image size was used"
     grep -q "resume with the options it was made with" "$out/log" || { cat "$out/log"; fail "no message"; } ;;
 scene_error)
-    printf 'camera [ eye 0 0 5 ]\nmastersubgraph root [\n  object sphere [ diffuse 1 1 ]\n]\n' >"$out/bad.sc"
+    # One error (a colour with two numbers), so that one message per rank would be seen as three.
+    printf 'camera [ eye 0 0 5 ]\nmastersubgraph root [ trans [\n  object sphere [ diffuse 1 1 ]\n] ]\n' >"$out/bad.sc"
     "${MPIRUN[@]}" -np 3 "$WHITTED_MPI" "$out/bad.sc" -o "$out/mpi.png" >"$out/log" 2>&1
     rc=$?
     cat "$out/log"
