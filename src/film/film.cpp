@@ -8,6 +8,13 @@ Film::Film(int width, int height, const PixelRegion& region)
     : width_(width), height_(height), region_(region),
       pixels_(std::size_t(std::max(0, region.width())) * std::size_t(std::max(0, region.height()))) {}
 
+void Film::reset(int width, int height, const PixelRegion& region) {
+    width_ = width;
+    height_ = height;
+    region_ = region;
+    pixels_.assign(std::size_t(std::max(0, region.width())) * std::size_t(std::max(0, region.height())), FilmPixel{});
+}
+
 void Film::copy_from(const Film& from, const PixelRegion& r) {
     for (int y = r.y0; y < r.y1; ++y)
         std::copy_n(&from.at(r.x0, y), r.width(), &at(r.x0, y));

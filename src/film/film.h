@@ -34,6 +34,10 @@ public:
     // The whole image.
     Film(int width, int height) : Film(width, height, PixelRegion{0, 0, width, height}) {}
 
+    // Makes this the film of `region` of a width × height image, every pixel without samples
+    // (keeping the memory it has: a worker's film reused tile after tile).
+    void reset(int width, int height, const PixelRegion& region);
+
     int width() const { return width_; }
     int height() const { return height_; }
     const PixelRegion& region() const { return region_; }

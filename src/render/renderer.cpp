@@ -27,12 +27,17 @@ RenderStats render(const Integrator& integrator, const RenderJob& job, Film& fil
     return render_tiles(integrator, job, cut_into_tiles(job.render_region(), job.tile_size), film);
 }
 
-RenderStats render_tiles(const Integrator& integrator, const RenderJob& job, const std::vector<Tile>& tiles,
-                         Film& film) {
+namespace {
+
+// The tile loop: each worker adds the job's samples of a tile to the film film_for(worker, tile)
+// gives, then finish(worker, tile, film) sees it (also when a cancel cut it short).
+template <class FilmFor, class Finish>
+RenderStats run_tiles(const Integrator& integrator, const RenderJob& job, const std::vector<Tile>& tiles,
+                      int threads, FilmFor&& film_for, Finish&& finish) {
     const auto start = std::chrono::steady_clock::now();
     RenderStats stats;
     stats.tiles_total = int(tiles.size());
-    stats.threads = worker_count(job.threads, tiles.size());
+    stats.threads = threads;
 
     // One renderer (scratch buffers, ray counts) per worker, each on cache lines of its own.
     std::vector<TileRenderer> workers;
@@ -41,7 +46,10 @@ RenderStats render_tiles(const Integrator& integrator, const RenderJob& job, con
     alignas(64) std::atomic<int> done{0};
     parallel_for(tiles.size(), stats.threads, [&](std::size_t i, int w) {
         if (job.cancel && job.cancel->load(std::memory_order_relaxed)) return;
-        if (!workers[std::size_t(w)].render(tiles[i], film)) return;
+        Film& film = film_for(w, tiles[i]);
+        const bool complete = workers[std::size_t(w)].render(tiles[i], film);
+        finish(w, tiles[i], film);
+        if (!complete) return;
         done.fetch_add(1, std::memory_order_relaxed);
         if (job.on_tile) job.on_tile(tiles[i]);
     });
@@ -53,12 +61,30 @@ RenderStats render_tiles(const Integrator& integrator, const RenderJob& job, con
     return stats;
 }
 
+}  // namespace
+
+RenderStats render_tiles(const Integrator& integrator, const RenderJob& job, const std::vector<Tile>& tiles,
+                         Film& film) {
+    return run_tiles(
+        integrator, job, tiles, worker_count(job.threads, tiles.size()),
+        [&](int, const Tile&) -> Film& { return film; }, [](int, const Tile&, const Film&) {});
+}
+
 RenderStats render(const Scene& scene, const RenderJob& job, Image& image) {
     const auto integrator = make_integrator(scene, job.camera_for(scene), job.integrator);
-    Film film(job.width, job.height);
-    RenderStats stats = render(*integrator, job, film);
-    film.write_to(image, job.render_region());
-    return stats;
+    // Each worker adds a tile's samples to a small film of its own and writes the tile's bytes: a
+    // film of the whole image would be 16 bytes a pixel to fault in and convert (a tenth of a
+    // one-sample 1080p render).
+    const std::vector<Tile> tiles = cut_into_tiles(job.render_region(), job.tile_size);
+    const int threads = worker_count(job.threads, tiles.size());
+    std::vector<Film> tile_films(static_cast<std::size_t>(threads));
+    return run_tiles(
+        *integrator, job, tiles, threads,
+        [&](int w, const Tile& t) -> Film& {
+            tile_films[std::size_t(w)].reset(job.width, job.height, t);
+            return tile_films[std::size_t(w)];
+        },
+        [&](int, const Tile& t, const Film& film) { film.write_to(image, t); });
 }
 
 }  // namespace whitted
