@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <random>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <stb/stb_image.h>
@@ -16,6 +17,8 @@
 
 namespace whitted {
 namespace {
+
+namespace fs = std::filesystem;
 
 std::string extension_of(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
@@ -79,6 +82,30 @@ struct FileSink {
     }
 };
 
+// `name` shortened (keeping its extension) to at most `max_bytes` bytes, not cutting a UTF-8
+// character in two: a file name may have 255 bytes, and names derived from it must fit too.
+std::string fit_name(const std::string& name, std::size_t max_bytes) {
+    if (name.size() <= max_bytes) return name;
+    std::string ext = fs::path(name).extension().string();
+    if (ext.size() >= max_bytes) ext.clear();
+    std::size_t keep = max_bytes - ext.size();
+    while (keep > 0 && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80) --keep;  // a continuation byte
+    return name.substr(0, keep) + ext;
+}
+
+constexpr std::size_t kMaxFileName = 255;  // bytes in one path component (NAME_MAX on Linux)
+
+// A fresh name in the target's directory (so that the rename is atomic): hidden, a random part
+// to keep concurrent writers apart, the extension last for readers that sniff it, never longer
+// than a file name may be, whatever the target's length.
+std::string temporary_beside(const std::string& path) {
+    const fs::path target(path);
+    std::random_device rd;
+    const std::string suffix = ".tmp" + std::to_string(rd() % 1000000) + extension_of(path);
+    const std::string stem = fit_name(target.stem().string(), kMaxFileName - 1 - suffix.size());
+    return (target.parent_path() / ("." + stem + suffix)).string();
+}
+
 bool encode(const Image& image, const std::string& ext, FileSink& sink) {
     const int w = image.width, h = image.height;
     const auto* px = image.rgb.data();
@@ -101,6 +128,15 @@ bool encode(const Image& image, const std::string& ext, FileSink& sink) {
 
 }  // namespace
 
+// Debian's stb_image_write 2.27 compresses the filtered PNG rows, L = (3w + 1)·h bytes, into a
+// buffer that grows by doubling an int capacity: 2, 5, 11, … 3·2^k − 1. From 1,610,612,735 it
+// would double past INT_MAX (a heap overflow, issue 15), so the zlib stream may hold at most
+// 1,610,612,734 bytes. Its fixed Huffman code spends at most 9 bits per byte (literals 144–255;
+// matches spend less), so the stream is at most 2 + ⌈(3 + 9L + 7) / 8⌉ + 4 bytes: an image of
+// noise gets there. Hence L ≤ (8 · 1,610,612,728 − 10) / 9. This is below the int limits of its
+// other sums (L + 2 + 5⌈L / 32767⌉, the file's 57 + stream bytes).
+static_assert(kMaxPngFilteredBytes == (8ull * 1'610'612'728 - 10) / 9);
+
 bool is_supported_output(const std::string& path) {
     std::string ext = extension_of(path);
     return ext == ".png" || ext == ".bmp" || ext == ".ppm" || ext == ".jpg" || ext == ".jpeg";
@@ -111,11 +147,14 @@ std::string output_problem(int width, int height, const std::string& path) {
         return "cannot write '" + path + "': unknown image format (use .png, .bmp, .ppm, .jpg or .jpeg)";
     if (width <= 0 || height <= 0) return "cannot write '" + path + "': the image is empty";
     const std::string ext = extension_of(path);
-    // stb's PNG and BMP writers count the whole file in an int (and JPEG its size in 16 bits).
-    const std::size_t row = std::size_t(width) * 3 + 4;  // with a PNG filter byte or BMP padding
-    if ((ext == ".png" || ext == ".bmp") && row * std::size_t(height) > std::size_t(INT_MAX) - 1024)
-        return "cannot write '" + path + "': " + std::to_string(width) + "x" + std::to_string(height) +
-               " is too large for " + ext + " (over 2 GB of pixels); use .ppm";
+    const std::string too_large = "cannot write '" + path + "': " + std::to_string(width) + "x" +
+                                  std::to_string(height) + " is too large for " + ext;
+    if (ext == ".png" && (std::uint64_t(width) * 3 + 1) * std::uint64_t(height) > kMaxPngFilteredBytes)
+        return too_large + " (stb's PNG encoder counts its buffers in int); use .ppm";
+    // stb's BMP writer puts the file size, 54 + (3w rounded up to 4)·h, in an int.
+    const std::uint64_t bmp_row = (std::uint64_t(width) * 3 + 3) / 4 * 4;
+    if (ext == ".bmp" && 54 + bmp_row * std::uint64_t(height) > std::uint64_t(INT_MAX))
+        return too_large + " (over 2 GB); use .ppm";
     if ((ext == ".jpg" || ext == ".jpeg") && (width > 65535 || height > 65535))
         return "cannot write '" + path + "': JPEG images are at most 65535 pixels wide and high; use .png or .ppm";
     return "";
@@ -126,10 +165,7 @@ std::string write_image(const Image& image, const std::string& path) {
     const std::string ext = extension_of(path);
     if (image.rgb.size() != std::size_t(image.width) * std::size_t(image.height) * 3)
         return "cannot write '" + path + "': the image's pixels do not match its size";
-    // Same directory as the target, so that the rename is atomic; a random suffix keeps
-    // concurrent writers apart. The extension stays last for readers that sniff it.
-    std::random_device rd;
-    const std::string tmp = path + ".tmp" + std::to_string(rd() % 1000000) + ext;
+    const std::string tmp = temporary_beside(path);
     const WritingGuard guard(tmp);
     FileSink sink(tmp);
     const bool encoded = sink.ok && encode(image, ext, sink);
@@ -146,6 +182,29 @@ std::string write_image(const Image& image, const std::string& path) {
         std::filesystem::remove(tmp, ignored);
         return "cannot write '" + path + "': " + ec.message();
     }
+    return "";
+}
+
+std::string partial_image_path(const std::string& path) {
+    const fs::path target(path);
+    const std::string ext = target.extension().string();
+    const std::string stem = fit_name(target.stem().string(), kMaxFileName - (".partial" + ext).size());
+    return (target.parent_path() / (stem + ".partial" + ext)).string();
+}
+
+std::string output_unwritable(const std::string& path) {
+    const std::string head = "cannot write '" + path + "': ";
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) return head + "it is a directory";
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty() && !fs::is_directory(parent, ec))
+        return head + "the folder '" + parent.string() + "' does not exist";
+    // What write_image will do first: create a file beside the target.
+    const std::string probe = temporary_beside(path);
+    const int fd = open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) return head + std::strerror(errno);
+    close(fd);
+    unlink(probe.c_str());
     return "";
 }
 

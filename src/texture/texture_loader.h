@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "flatten/flatten.h"
+#include "texture/texture_decode.h"
 
 namespace whitted {
 
@@ -23,6 +24,10 @@ struct TextureOptions {
     // user declined to look for them; others are still errors).
     std::set<std::string> checker_names;
     MissingTexturePolicy missing = MissingTexturePolicy::Error;
+    // For files from others (--untrusted): a texture is read only from inside the scene file's
+    // folder or a search dir (after following links and `..`); absolute names are refused.
+    bool confined = false;
+    TextureLimits limits;  // per file, and max_total_bytes for all of a scene's textures together
 };
 
 struct MissingTexture {

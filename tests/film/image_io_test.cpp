@@ -55,5 +55,22 @@ TEST(ImageIo, RefusesSizesItsEncodersCannotCount) {
     for (const char* name : {"/h.png", "/h.bmp", "/h.jpg", "/w.png"}) EXPECT_FALSE(fs::exists(dir + name)) << name;
 }
 
+TEST(ImageIo, RefusesExactlyThePngsStbCannotEncode) {
+    // Issue 15, finding 1: 32768 × 21842 passed the old check and overflowed stb's zlib buffer.
+    // stb's buffer holds at most 1,610,612,734 bytes of zlib stream, which for 9-bit literals
+    // allows (3w + 1)·h ≤ 1,431,655,757 filtered bytes. At w = 32768 a row is 98,305 bytes:
+    // 98,305 × 14,563 = 1,431,615,715 fits, 98,305 × 14,564 = 1,431,714,020 does not.
+    EXPECT_NE(output_problem(32768, 21842, "a.png").find("too large"), std::string::npos);
+    EXPECT_EQ(output_problem(32768, 14563, "a.png"), "");
+    EXPECT_NE(output_problem(32768, 14564, "a.png").find("32768x14564 is too large for .png"), std::string::npos);
+    // A square: 3w² + w ≤ 1,431,655,757 gives w = 21845 (3·21845² + 21845 = 1,431,633,920;
+    // at 21846: 1,431,764,994).
+    EXPECT_EQ(output_problem(21845, 21845, "a.png"), "");
+    EXPECT_NE(output_problem(21846, 21846, "a.png"), "");
+    // BMP: 54 + 4·⌈3w/4⌉·h ≤ INT_MAX. w = 32768: 98,304 bytes a row, h ≤ 21,845 (2,147,450,934 bytes).
+    EXPECT_EQ(output_problem(32768, 21845, "a.bmp"), "");
+    EXPECT_NE(output_problem(32768, 21846, "a.bmp"), "");
+}
+
 }  // namespace
 }  // namespace whitted
