@@ -83,7 +83,9 @@ int main(int argc, char** argv) {
     app.add_option("--threads", o.settings.threads, "Worker threads (0 = all hardware threads)")
         ->check(CLI::Range(0, 1024));
     app.add_flag("--watch", o.watch, "Reload and render again when the scene file changes on disk");
-    app.add_option("--texture-path", o.texture_dirs, "Extra directory to look for textures in (repeatable)")
+    // One directory per --texture-path (repeat it for more): a list would swallow the scene after it.
+    app.add_option("--texture-path", o.texture_dirs, "Extra directory to look for textures in (repeat for more)")
+        ->allow_extra_args(false)
         ->default_str("");
     app.add_option("--missing-textures", missing, "A texture that cannot be found: ask for the file, or draw a checkerboard")
         ->check(CLI::IsMember({"ask", "checker"}));
