@@ -5,7 +5,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 
 namespace whitted::cli {
 
@@ -25,11 +24,8 @@ std::optional<std::size_t> parse_memory_size(const std::string& text) {
     return std::size_t(value * scale);
 }
 
-std::size_t image_memory(int width, int height, const std::string& output) {
-    const std::size_t pixels = std::size_t(width) * std::size_t(height) * 3;
-    std::string ext = std::filesystem::path(output).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return ext == ".png" ? pixels + (pixels + std::size_t(height)) * 17 / 8 : pixels;
+std::size_t image_memory(int width, int height, const std::string&) {
+    return std::size_t(width) * std::size_t(height) * 3;
 }
 
 void apply_untrusted(LoadOptions& options) {

@@ -12,8 +12,8 @@ namespace whitted::cli {
 // "4G", "512M", "100000K", "2000000000": a number of bytes with an optional binary suffix.
 std::optional<std::size_t> parse_memory_size(const std::string& text);
 
-// What writing a width × height image takes besides the scene: its pixels, and for PNG stb's
-// filtered copy and compressed stream (up to 9/8 of the copy).
+// What rendering and writing a width × height image takes besides the scene: its pixels (the
+// encoders stream them; PNG keeps a few 4 MB bands in flight).
 std::size_t image_memory(int width, int height, const std::string& output);
 
 // --untrusted: limits for files one did not write (README, "Rendering files from others").

@@ -15,6 +15,8 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include "film/png_encode.h"
+
 namespace whitted {
 namespace {
 
@@ -109,15 +111,7 @@ std::string temporary_beside(const std::string& path) {
 bool encode(const Image& image, const std::string& ext, FileSink& sink) {
     const int w = image.width, h = image.height;
     const auto* px = image.rgb.data();
-    if (ext == ".png") {
-        // stb tries all five PNG filters on every row and searches long match chains by default:
-        // half of a small render's whole run went into that. One filter (Sub) and stb's shortest
-        // chains encode 640×480 renders in half the time, the files 2–8% larger (measured on the
-        // bench and bundled scenes). Set once: these are stb's globals.
-        static const bool tuned = (stbi_write_png_compression_level = 5, stbi_write_force_png_filter = 1, true);
-        (void)tuned;
-        return stbi_write_png_to_func(FileSink::callback, &sink, w, h, 3, px, w * 3) != 0;
-    }
+    if (ext == ".png") return encode_png(image, [&](const void* data, std::size_t size) { sink.write(data, size); });
     if (ext == ".bmp") return stbi_write_bmp_to_func(FileSink::callback, &sink, w, h, 3, px) != 0;
     if (ext == ".jpg" || ext == ".jpeg") return stbi_write_jpg_to_func(FileSink::callback, &sink, w, h, 3, px, 95) != 0;
     const std::string header = "P6\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
@@ -127,15 +121,6 @@ bool encode(const Image& image, const std::string& ext, FileSink& sink) {
 }
 
 }  // namespace
-
-// Debian's stb_image_write 2.27 compresses the filtered PNG rows, L = (3w + 1)·h bytes, into a
-// buffer that grows by doubling an int capacity: 2, 5, 11, … 3·2^k − 1. From 1,610,612,735 it
-// would double past INT_MAX (a heap overflow, issue 15), so the zlib stream may hold at most
-// 1,610,612,734 bytes. Its fixed Huffman code spends at most 9 bits per byte (literals 144–255;
-// matches spend less), so the stream is at most 2 + ⌈(3 + 9L + 7) / 8⌉ + 4 bytes: an image of
-// noise gets there. Hence L ≤ (8 · 1,610,612,728 − 10) / 9. This is below the int limits of its
-// other sums (L + 2 + 5⌈L / 32767⌉, the file's 57 + stream bytes).
-static_assert(kMaxPngFilteredBytes == (8ull * 1'610'612'728 - 10) / 9);
 
 bool is_supported_output(const std::string& path) {
     std::string ext = extension_of(path);
@@ -149,8 +134,6 @@ std::string output_problem(int width, int height, const std::string& path) {
     const std::string ext = extension_of(path);
     const std::string too_large = "cannot write '" + path + "': " + std::to_string(width) + "x" +
                                   std::to_string(height) + " is too large for " + ext;
-    if (ext == ".png" && (std::uint64_t(width) * 3 + 1) * std::uint64_t(height) > kMaxPngFilteredBytes)
-        return too_large + " (stb's PNG encoder counts its buffers in int); use .ppm";
     // stb's BMP writer puts the file size, 54 + (3w rounded up to 4)·h, in an int.
     const std::uint64_t bmp_row = (std::uint64_t(width) * 3 + 3) / 4 * 4;
     if (ext == ".bmp" && 54 + bmp_row * std::uint64_t(height) > std::uint64_t(INT_MAX))

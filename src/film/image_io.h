@@ -7,7 +7,8 @@
 
 namespace whitted {
 
-// Writes PNG (default), BMP, PPM (binary P6) or JPEG by the file's extension (case-insensitive).
+// Writes PNG (default; zlib, film/png_encode.h), BMP, PPM (binary P6) or JPEG (stb) by the file's
+// extension (case-insensitive).
 // The image goes to a temporary file beside the target (hidden: .NAME.tmpNNNNNN.EXT), which is
 // renamed over it only when complete, so a failure never leaves a half-written image. Returns "" or an error message.
 std::string write_image(const Image& image, const std::string& path);
@@ -16,9 +17,6 @@ std::string write_image(const Image& image, const std::string& path);
 // that exits at once: it may read this (a fixed buffer behind an atomic flag, async-signal-safe)
 // and unlink the file, so that not even an exit in mid-write leaves a partial file behind.
 const char* image_file_being_written();
-
-// The largest PNG write_image encodes, in filtered bytes (3·width + 1)·height (see image_io.cpp).
-constexpr unsigned long long kMaxPngFilteredBytes = 1'431'655'757;
 
 // Why write_image would refuse a width × height image at `path` (an unknown extension, a size
 // the format cannot hold), or "": a frontend asks before spending a render on it.

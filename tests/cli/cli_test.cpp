@@ -64,9 +64,14 @@ TEST(Cli, BadUsageExitsOne) {
     EXPECT_EQ(run_process({test::cli_path(), "--aa-threshold", "nan"}).exit_code, 1);
     EXPECT_EQ(run_process({test::cli_path(), "x.sc", "-o", "out.gif"}).exit_code, 1);
     // A size the format cannot hold is refused before the render, not after it.
-    auto huge = run_process({test::cli_path(), "-o", "/tmp/never.png", "--width", "32768", "--height", "32768"});
+    auto huge = run_process({test::cli_path(), "-o", "/tmp/never.bmp", "--width", "32768", "--height", "32768"});
     EXPECT_EQ(huge.exit_code, 1);
-    EXPECT_NE(huge.output.find("32768x32768 is too large for .png"), std::string::npos) << huge.output;
+    EXPECT_NE(huge.output.find("32768x32768 is too large for .bmp"), std::string::npos) << huge.output;
+    // And memory: 32768 × 32768 × 3 bytes is 3.0 GiB of image, over a 2G --max-memory.
+    huge = run_process({test::cli_path(), "-o", "/tmp/never.png", "--width", "32768", "--height", "32768",
+                        "--max-memory", "2G"});
+    EXPECT_EQ(huge.exit_code, 1);
+    EXPECT_NE(huge.output.find("image needs about 3.0 GiB of memory"), std::string::npos) << huge.output;
     auto help = run_process({test::cli_path(), "--help"});
     EXPECT_EQ(help.exit_code, 0);
     EXPECT_NE(help.output.find("--max-depth INT:INT in [0 - 1000]=5"), std::string::npos) << help.output;
