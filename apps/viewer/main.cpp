@@ -112,6 +112,11 @@ int main(int argc, char** argv) {
         return 1;
     }
     if (!o.screenshot.empty()) o.exit_when_done = true;
+    // Nothing would ever be rendered, so "when done" would never come: say so instead of waiting.
+    if (o.exit_when_done && o.scene.empty()) {
+        std::cerr << "whitted-view: error: --screenshot and --exit-when-done need a scene file to render\n";
+        return 1;
+    }
     o.settings.mode = *parse_render_mode(mode_name);
     o.checker_textures = missing == "checker";
 
