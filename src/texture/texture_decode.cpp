@@ -9,6 +9,7 @@
 #include <stb/stb_image.h>
 
 #include "parse/read_file.h"
+#include "texture/jpeg_decode.h"
 
 namespace whitted {
 namespace {
@@ -65,7 +66,7 @@ std::uint64_t promised_bytes(std::string_view b) {
     return 0;
 }
 
-// stb_image reads zeros past the end of a truncated BMP or JPEG and reports success; such a file
+// stb_image reads zeros past the end of a truncated BMP (or TGA) and reports success; such a file
 // decodes differently once bytes are appended. PNG's own checks already catch truncation.
 bool decoded_past_the_end(std::string_view bytes, const unsigned char* data, int w, int h) {
     if (starts_with(bytes, "\x89PNG")) return false;
@@ -84,6 +85,7 @@ std::string decode_texture(std::string_view bytes, const TextureLimits& limits, 
     if (bytes.size() > std::size_t(INT_MAX)) return "the file is too large";
     if (const char* format = undocumented_format(bytes))
         return std::string("unsupported format (") + format + "): use PNG, JPEG, BMP, TGA or binary PPM";
+    if (starts_with(bytes, "\xff\xd8")) return decode_jpeg(bytes, limits, out);
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     const int size = int(bytes.size());
     int w = 0, h = 0, n = 0;

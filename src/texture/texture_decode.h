@@ -17,7 +17,8 @@ struct TextureLimits {
     std::size_t max_total_bytes = std::size_t(1) << 30;   // all textures of a scene together, as stored
 };
 
-// Decodes PNG, JPEG, BMP, TGA or binary PNM (P5/P6) into 8-bit RGB; alpha is dropped. Returns ""
+// Decodes PNG, BMP, TGA or binary PNM (P5/P6) with stb_image, JPEG with libjpeg (jpeg_decode.h),
+// into 8-bit RGB; alpha is dropped. Returns ""
 // or why not (without the file's name), e.g. "16384x16384 texels, more than the limit of ...".
 std::string decode_texture(std::string_view bytes, const TextureLimits& limits, TextureImage& out);
 
