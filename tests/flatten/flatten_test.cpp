@@ -151,20 +151,17 @@ TEST(Flatten, BoundsTheStepsOfTheWalkNotOnlyTheObjects) {
     EXPECT_TRUE(refused.scene.instances.empty());
 }
 
+// 2^levels spheres: each level `trans [ subgraph s(i-1) subgraph s(i-1) ]` over one sphere.
+SceneDescription doubling_over_sphere(int levels) {
+    SceneDescription d = doubling_over_empty(levels);
+    d.subgraphs[0].children[0].objects.push_back({ShapeKind::Sphere, {}, {}});
+    return d;
+}
+
 // Issue 15, finding 9: the memory a scene needs is estimated from the counts, before any object
 // is made: 2^10 spheres at kBytesPerInstance (128) each is 131,072 bytes.
 TEST(Flatten, RefusesWhatExceedsTheMemoryLimitWithTheEstimate) {
-    SceneDescription d;
-    d.path = "mem.sc";
-    for (int i = 0; i <= 10; ++i) {
-        SubgraphDesc s{i == 10 ? "root" : "s" + std::to_string(i), {}, {}};
-        TransDesc t = trans(glm::mat4(1.0f));
-        if (i == 0) t.objects.push_back({ShapeKind::Sphere, {}, {}});
-        else t.subgraphs = {{"s" + std::to_string(i - 1), {}}, {"s" + std::to_string(i - 1), {}}};
-        s.children.push_back(t);
-        d.subgraphs.push_back(s);
-    }
-    d.root = 10;
+    const SceneDescription d = doubling_over_sphere(10);
     static_assert(kBytesPerInstance == 128);
     FlattenResult fits = flatten(d, {.max_bytes = 131'072});
     ASSERT_TRUE(fits.ok());
@@ -180,17 +177,7 @@ TEST(Flatten, RefusesWhatExceedsTheMemoryLimitWithTheEstimate) {
 
 TEST(Flatten, StopsWhenCancelled) {
     // 2^16 spheres: 65,536 references walked unless the walk looks at the flag.
-    SceneDescription d;
-    d.path = "cancel.sc";
-    for (int i = 0; i <= 16; ++i) {
-        SubgraphDesc s{i == 16 ? "root" : "s" + std::to_string(i), {}, {}};
-        TransDesc t = trans(glm::mat4(1.0f));
-        if (i == 0) t.objects.push_back({ShapeKind::Sphere, {}, {}});
-        else t.subgraphs = {{"s" + std::to_string(i - 1), {}}, {"s" + std::to_string(i - 1), {}}};
-        s.children.push_back(t);
-        d.subgraphs.push_back(s);
-    }
-    d.root = 16;
+    const SceneDescription d = doubling_over_sphere(16);
     const std::atomic<bool> cancel{true};
     FlattenResult r = flatten(d, {.cancel = &cancel});
     EXPECT_TRUE(r.cancelled);
