@@ -9,7 +9,7 @@ namespace whitted {
 struct Surface {
     glm::vec3 point;      // world space
     glm::vec3 normal;     // world space, unit, outward
-    glm::vec2 uv;         // texture coordinates of the unit shape (spec §8)
+    glm::vec2 uv;         // texture coordinates (spec §8; a mesh's vt, §9.3)
     const Material* material;
     glm::vec3 diffuse;    // material diffuse × texel
     glm::vec3 ambient;    // material ambient × texel

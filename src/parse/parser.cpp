@@ -33,8 +33,8 @@ constexpr const char* kSubgraphKeywords = "trans";
 constexpr const char* kTransKeywords =
     "translate, scale, rotate, matrixRC, matrixCR, object, subgraph";
 constexpr const char* kObjectKeywords =
-    "ambient, diffuse, specular, reflect, transparent, emit, shine, ior, gloss, texture";
-constexpr const char* kShapeNames = "cube, cylinder, cone, sphere";
+    "ambient, diffuse, specular, reflect, transparent, emit, shine, ior, gloss, texture, file";
+constexpr const char* kShapeNames = "cube, cylinder, cone, sphere, mesh";
 
 // A token as it should appear in a message: quoted, printable, not absurdly long.
 std::string describe(const Token& t) {
@@ -516,6 +516,8 @@ private:
             obj.kind = ShapeKind::Cone;
         else if (type.text == "sphere")
             obj.kind = ShapeKind::Sphere;
+        else if (type.text == "mesh")
+            obj.kind = ShapeKind::Mesh;
         else {
             if (!options_.lenient)
                 fail(type, "unknown object type " + describe(type) + " (expected one of: " +
@@ -568,10 +570,19 @@ private:
                 if (!(tex.repeat_v > 0))
                     fail(v, "texture repeat count v must be > 0; found " + num_str(tex.repeat_v));
                 mat.texture = std::move(tex);
+            } else if (w == "file") {
+                // §9.3: the OBJ file of a mesh, looked up like a texture when the scene is loaded.
+                if (obj.kind != ShapeKind::Mesh)
+                    fail(*k, "'file' names the OBJ file of an 'object mesh'; a " + std::string(shape_name(obj.kind)) +
+                                 " has no file");
+                obj.mesh_loc = loc(*k);
+                obj.mesh_file = std::string(word(*k, "a mesh file name (an OBJ file)").text);
             } else {
                 unknown_keyword(*k, "object", kObjectKeywords);
             }
         }
+        if (obj.kind == ShapeKind::Mesh && obj.mesh_file.empty())
+            fail(opener, "'object mesh' needs its OBJ file: 'file PATH' in the object block (scene-format.md §9.3)");
         trans.objects.push_back(std::move(obj));
     }
 

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "flatten/flatten.h"
+#include "mesh/mesh_loader.h"
 
 namespace whitted {
 namespace {
@@ -30,6 +31,9 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     result.missing_textures = load_textures(flat, parsed.scene.path, options.textures, result.diagnostics);
     result.stats.texture_seconds = since(t);
     if (has_errors(result.diagnostics) || cancelled()) return result;
+    // Meshes (§9.3) are looked up where textures are.
+    if (!load_meshes(flat, parsed.scene.path, options.textures.search_dirs, result.diagnostics) || cancelled())
+        return result;
 
     t = Clock::now();
     result.stats.objects = flat.scene.instances.size();

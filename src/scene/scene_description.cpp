@@ -8,6 +8,7 @@ const char* shape_name(ShapeKind kind) {
         case ShapeKind::Cylinder: return "cylinder";
         case ShapeKind::Cone: return "cone";
         case ShapeKind::Sphere: return "sphere";
+        case ShapeKind::Mesh: return "mesh";
     }
     return "?";
 }

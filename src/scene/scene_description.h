@@ -14,7 +14,8 @@
 
 namespace whitted {
 
-enum class ShapeKind : unsigned char { Cube = 0, Cylinder = 1, Cone = 2, Sphere = 3 };
+// Mesh: a triangle mesh from an OBJ file (§9.3), not a unit shape; the unit-shape code never sees it.
+enum class ShapeKind : unsigned char { Cube = 0, Cylinder = 1, Cone = 2, Sphere = 3, Mesh = 8 };
 const char* shape_name(ShapeKind kind);
 
 struct TextureRef {
@@ -66,6 +67,8 @@ struct ObjectDesc {
     ShapeKind kind = ShapeKind::Cube;
     MaterialDesc material;
     SourceLoc loc;
+    std::string mesh_file = {};  // kind == Mesh: the OBJ file as written (§9.3)
+    SourceLoc mesh_loc = {};     // of its `file` keyword
 };
 
 struct SubgraphRef {

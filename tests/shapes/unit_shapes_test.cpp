@@ -216,6 +216,7 @@ bool inside(ShapeKind k, glm::vec3 p) {
         case ShapeKind::Sphere: return glm::length(p) <= 0.5f;
         case ShapeKind::Cylinder: return slab && r <= 0.5f;
         case ShapeKind::Cone: return slab && r <= (0.5f - p.y) / 2;
+        case ShapeKind::Mesh: break;  // not a unit shape
     }
     return false;
 }
