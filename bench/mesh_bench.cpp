@@ -32,6 +32,7 @@
 #include "accel/scene.h"
 #include "flatten/flatten.h"
 #include "mesh/mesh_bvh.h"
+#include "mesh/uv_sphere.h"
 
 namespace {
 
@@ -54,27 +55,9 @@ double peak_rss_mb() {
 // A UV sphere of radius ~1 with rings × segments bands, displaced by smooth bumps (so that the
 // BVH sees an uneven surface, not a perfect sphere).
 TriangleMesh displaced_sphere(int rings, int segments) {
-    TriangleMesh m;
-    const float pi = 3.14159265358979f;
-    auto point = [&](float theta, float phi) {
-        const glm::vec3 d(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
-        const float r = 1.0f + 0.15f * std::sin(7 * d.x) * std::sin(5 * d.y + 1) * std::sin(6 * d.z + 0.5f);
-        return r * d;
-    };
-    m.positions.push_back(point(0, 0));
-    for (int r = 1; r < rings; ++r)
-        for (int s = 0; s < segments; ++s) m.positions.push_back(point(pi * float(r) / float(rings), 2 * pi * float(s) / float(segments)));
-    m.positions.push_back(point(pi, 0));
-    const std::uint32_t south = std::uint32_t(m.positions.size() - 1);
-    auto at = [&](int r, int s) { return std::uint32_t(1 + (r - 1) * segments + (s % segments)); };
-    for (int s = 0; s < segments; ++s) m.triangles.push_back({0, at(1, s), at(1, s + 1)});
-    for (int r = 1; r + 1 < rings; ++r)
-        for (int s = 0; s < segments; ++s) {
-            m.triangles.push_back({at(r, s), at(r + 1, s), at(r + 1, s + 1)});
-            m.triangles.push_back({at(r, s), at(r + 1, s + 1), at(r, s + 1)});
-        }
-    for (int s = 0; s < segments; ++s) m.triangles.push_back({at(rings - 1, s), south, at(rings - 1, s + 1)});
-    return m;
+    return uv_sphere_mesh(rings, segments, [](const glm::vec3& d) {
+        return 1.0f + 0.15f * std::sin(7 * d.x) * std::sin(5 * d.y + 1) * std::sin(6 * d.z + 0.5f);
+    });
 }
 
 struct Setup {

@@ -92,13 +92,8 @@ void bounds_of(const std::vector<PrimRef>& refs, std::uint32_t begin, std::uint3
 // World bounds padded by a few float ulps of their magnitude, so that a hit computed in object
 // space (with its own rounding) is never outside the box that leads to it.
 Bounds padded_world_bounds(const Instance& inst, const std::vector<TriangleMesh>* meshes) {
-    Bounds b = inst.kind == ShapeKind::Mesh ? mesh_world_bounds((*meshes)[inst.mesh], inst) : world_bounds(inst);
-    const glm::vec3 mag = glm::max(glm::abs(b.lo), glm::abs(b.hi));
-    const float m = std::max(std::max(mag.x, mag.y), mag.z);
-    const glm::vec3 pad = glm::vec3(1e-5f * m + 1e-30f);
-    b.lo -= pad;
-    b.hi += pad;
-    return b;
+    const Bounds b = inst.kind == ShapeKind::Mesh ? mesh_world_bounds((*meshes)[inst.mesh], inst) : world_bounds(inst);
+    return b.padded(1e-5f);
 }
 
 // The threads a build uses: as asked (0 = all hardware threads), at most 8.

@@ -25,12 +25,7 @@ void permute(std::vector<T>& v, const std::vector<std::uint32_t>& order) {
 Bounds padded_triangle_bounds(const TriangleMesh& mesh, std::uint32_t t) {
     Bounds b;
     for (std::uint32_t c : mesh.triangles[t]) b.grow(mesh.positions[c]);
-    const glm::vec3 mag = glm::max(glm::abs(b.lo), glm::abs(b.hi));
-    const float m = std::max(std::max(mag.x, mag.y), mag.z);
-    const glm::vec3 pad = glm::vec3(1e-6f * m + 1e-30f);
-    b.lo -= pad;
-    b.hi += pad;
-    return b;
+    return b.padded(1e-6f);
 }
 
 }  // namespace

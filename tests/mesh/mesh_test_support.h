@@ -9,37 +9,16 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "mesh/triangle_mesh.h"
+#include "mesh/uv_sphere.h"
 
 namespace whitted::test {
 
-// A closed UV sphere of the given radius: `rings` latitude bands, `segments` longitude ones,
-// shared vertices (the poles once), counter-clockwise seen from outside, with its vertex normals.
+// A closed UV sphere of the given radius (mesh/uv_sphere.h) with its vertex normals.
 inline TriangleMesh uv_sphere(int rings, int segments, float radius = 0.5f) {
-    TriangleMesh m;
-    const float pi = 3.14159265358979f;
-    m.positions.push_back({0, radius, 0});
-    for (int r = 1; r < rings; ++r)
-        for (int s = 0; s < segments; ++s) {
-            const float theta = pi * float(r) / float(rings), phi = 2 * pi * float(s) / float(segments);
-            m.positions.push_back(radius * glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta),
-                                                     -std::sin(theta) * std::sin(phi)));
-        }
-    m.positions.push_back({0, -radius, 0});
-    const std::uint32_t south = std::uint32_t(m.positions.size() - 1);
-    auto at = [&](int r, int s) { return std::uint32_t(1 + (r - 1) * segments + (s % segments)); };
-    for (int s = 0; s < segments; ++s) m.triangles.push_back({0, at(1, s), at(1, s + 1)});
-    for (int r = 1; r + 1 < rings; ++r)
-        for (int s = 0; s < segments; ++s) {
-            m.triangles.push_back({at(r, s), at(r + 1, s), at(r + 1, s + 1)});
-            m.triangles.push_back({at(r, s), at(r + 1, s + 1), at(r, s + 1)});
-        }
-    for (int s = 0; s < segments; ++s) m.triangles.push_back({at(rings - 1, s), south, at(rings - 1, s + 1)});
+    TriangleMesh m = uv_sphere_mesh(rings, segments, [radius](const glm::vec3&) { return radius; });
+    m.normals.reserve(m.positions.size());
     for (const glm::vec3& p : m.positions) m.normals.push_back(glm::normalize(p));
     m.normal_indices = m.triangles;
-    // Exact sizes, as the OBJ reader leaves them (memory is counted by capacity).
-    m.positions.shrink_to_fit();
-    m.normals.shrink_to_fit();
-    m.triangles.shrink_to_fit();
     return m;
 }
 
