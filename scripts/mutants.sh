@@ -47,7 +47,7 @@ mutant depth-view-inverted src/integrator/debug_views.cpp \
     'return glm::vec3(1.0f - std::clamp((d - near_) / (far_ - near_), 0.0f, 1.0f));' \
     'return glm::vec3(std::clamp((d - near_) / (far_ - near_), 0.0f, 1.0f));' \
     'WhittedIntegrator.*:DebugViews.*:Renderer.*'
-mutant second-ctrl-c-ignored apps/cli/interrupt.cpp \
+mutant second-ctrl-c-ignored apps/common/interrupt.cpp \
     'if (g_interrupted.exchange(true)) {' \
     'if (g_interrupted.exchange(true) && false) {' \
     'Cli*Interrupt*'
