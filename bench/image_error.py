@@ -54,7 +54,7 @@ def rmse(a, b):
 
 def time_for_error(points, target):
     """Seconds to reach RMSE `target`, from (seconds, rmse) points of one renderer."""
-    pts = sorted(points)
+    pts = sorted((max(t, 1e-3), e) for t, e in points)  # --stats has 1 ms resolution
     for (t0, e0), (t1, e1) in zip(pts, pts[1:]):
         if min(e0, e1) <= target <= max(e0, e1) and e0 != e1:
             s = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
