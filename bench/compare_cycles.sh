@@ -5,31 +5,33 @@
 # reach the other's error, and whether the two converged images agree within noise (bench/image_error.py
 # says how each number is computed).
 #
-#   bench/compare_cycles.sh [-s "SPP ..."] [-R REF_SPP] [-t THREADS] [-W WIDTH] [-H HEIGHT]
-#                           [-d DEPTH] [-b BUILD_DIR] [-k KEEP_DIR] [SCENE.sc ...]
+#   bench/compare_cycles.sh [-s "SPP ..."] [-R REF_SPP] [-w WHITTED_REF_SPP] [-t THREADS] [-W WIDTH]
+#                           [-H HEIGHT] [-d DEPTH] [-b BUILD_DIR] [-k KEEP_DIR] [SCENE.sc ...]
 #
 # Defaults: spp "16 64 256", reference 4096 spp, 2 threads, 128x128, depth 64, build/ (needs
 # build/apps/cli/whitted), scenes bench/scenes/cornell.sc and bench/scenes/quadrics.sc.
 # The reference is Cycles': two renders of REF_SPP/2 with different seeds (seed 1 and 2; the
 # low-spp Cycles runs use seed 0, so they are independent of it), averaged; the pair also gives
-# the reference's own noise. whitted renders REF_SPP/2 and REF_SPP for the agreement check (whitted
-# has no seed; its sample sequence is nested, which gives its noise the same way). Images go to
+# the reference's own noise. whitted renders W/2 and W spp (W = WHITTED_REF_SPP, default REF_SPP)
+# for the agreement check of the converged images (whitted has no seed; its sample sequence is
+# nested, which gives its noise the same way). Images go to
 # KEEP_DIR/SCENE/ when -k is given (else a temporary directory, removed at the end); a Cycles reference
 # found there is reused while the scene, the converter, Blender and the settings are unchanged.
 # Blender 3.4 (Debian's blender) and numpy are installed when missing; they are a benchmark anchor
 # only, not dependencies of whitted (so not in scripts/install-deps.sh).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-spps="16 64 256" ref_spp=4096 threads=2 width=128 height=128 depth=64 build="$here/../build" keep=""
-while getopts "s:R:t:W:H:d:b:k:" opt; do
+spps="16 64 256" ref_spp=4096 wref_spp="" threads=2 width=128 height=128 depth=64 build="$here/../build" keep=""
+while getopts "s:R:w:t:W:H:d:b:k:" opt; do
   case "$opt" in
-    s) spps="$OPTARG" ;; R) ref_spp="$OPTARG" ;; t) threads="$OPTARG" ;; W) width="$OPTARG" ;;
+    s) spps="$OPTARG" ;; R) ref_spp="$OPTARG" ;; w) wref_spp="$OPTARG" ;; t) threads="$OPTARG" ;; W) width="$OPTARG" ;;
     H) height="$OPTARG" ;; d) depth="$OPTARG" ;; b) build="$OPTARG" ;; k) keep="$OPTARG" ;;
-    *) sed -n '2,20p' "$0"; exit 1 ;;
+    *) sed -n '2,21p' "$0"; exit 1 ;;
   esac
 done
 shift $((OPTIND - 1))
-((ref_spp % 2 == 0)) || { echo "compare_cycles: -R must be even (two halves)" >&2; exit 1; }
+wref_spp="${wref_spp:-$ref_spp}"
+((ref_spp % 2 == 0 && wref_spp % 2 == 0)) || { echo "compare_cycles: -R and -w must be even (two halves)" >&2; exit 1; }
 scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=("$here/scenes/cornell.sc" "$here/scenes/quadrics.sc")
 whitted="$build/apps/cli/whitted"
@@ -84,10 +86,11 @@ whitted() {
                     v = $(i + 1); gsub(/[s,]/, "", v); t += v; n++ } }
                 END { if (n) printf "%.3f\n", t }' "$tmp/whitted.log")
   [ -n "$render" ] || { echo "compare_cycles: no render time in whitted --stats:" >&2; cat "$tmp/whitted.log" >&2; exit 1; }
+  awk '/^samples rejected/ && $NF != 0 { print "compare_cycles: whitted: " $0 }' "$tmp/whitted.log" >&2
 }
 
 echo "$blender_version (Cycles, CPU); machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) hardware threads; load: $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "size ${width}x${height}, max depth $depth bounces, $threads threads; spp $spps; reference Cycles $ref_spp spp"
+echo "size ${width}x${height}, max depth $depth bounces, $threads threads; spp $spps; reference Cycles $ref_spp spp; whitted converged $wref_spp spp"
 for sc in "${scenes[@]}"; do
   name="$(basename "$sc" .sc)"
   out="$tmp/$name"; [ -z "$keep" ] || out="$keep/$name"
@@ -113,10 +116,10 @@ for sc in "${scenes[@]}"; do
     echo "$stamp" > "$out/cycles_ref.stamp"
     cat "$out/cycles_ref.tsv" >> "$runs"
   fi
-  whitted "$out/whitted_ref_half.pfm" "$sc" "$half"
-  printf 'wref_half\twhitted\t%s\t%s\t%s\t%s\n' "$half" "$wall" "$render" "$out/whitted_ref_half.pfm" >> "$runs"
-  whitted "$out/whitted_ref.pfm" "$sc" "$ref_spp"
-  printf 'wref\twhitted\t%s\t%s\t%s\t%s\n' "$ref_spp" "$wall" "$render" "$out/whitted_ref.pfm" >> "$runs"
+  whitted "$out/whitted_ref_half.pfm" "$sc" "$((wref_spp / 2))"
+  printf 'wref_half\twhitted\t%s\t%s\t%s\t%s\n' "$((wref_spp / 2))" "$wall" "$render" "$out/whitted_ref_half.pfm" >> "$runs"
+  whitted "$out/whitted_ref.pfm" "$sc" "$wref_spp"
+  printf 'wref\twhitted\t%s\t%s\t%s\t%s\n' "$wref_spp" "$wall" "$render" "$out/whitted_ref.pfm" >> "$runs"
   # The low-spp runs, the two renderers alternating.
   for spp in $spps; do
     whitted "$out/whitted_$spp.pfm" "$sc" "$spp"

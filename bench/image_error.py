@@ -54,7 +54,7 @@ def rmse(a, b):
 
 def time_for_error(points, target):
     """Seconds to reach RMSE `target`, from (seconds, rmse) points of one renderer."""
-    pts = sorted(points)
+    pts = sorted((max(t, 1e-3), e) for t, e in points)  # --stats has 1 ms resolution
     for (t0, e0), (t1, e1) in zip(pts, pts[1:]):
         if min(e0, e1) <= target <= max(e0, e1) and e0 != e1:
             s = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
@@ -98,7 +98,7 @@ def main(runs_path):
         r['rmse'], r['rmse_corr'] = e, corr
         points.setdefault(r['renderer'], []).append((r['render'], corr))
         print(f'{r["renderer"]:<9} {r["spp"]:>5} {r["wall"]:>8.2f} {r["render"]:>9.2f} {e:>9.5f} {corr:>10.5f}')
-    print('(render_s: the render alone: whitted --stats total minus parse; Cycles: the render call, '
+    print('(render_s: whitted: flatten + textures + build + render of --stats; Cycles: the render call, '
           'with its scene sync and BVH build; wall_s: the whole process, Blender start-up included; '
           'rmse_corr: RMSE with the reference\'s own noise variance taken out)')
 
@@ -116,6 +116,9 @@ def main(runs_path):
         wref_half, wref = load(by_role['wref_half']['path']), load(by_role['wref']['path'])
         second_half = 2 * wref - wref_half
         var_w = (wref_half - second_half) ** 2 / 4
+        # Where neither image has noise (the sky seen directly: the background colour exactly) the
+        # difference is float rounding: a variance floor of (1e-4 of the value)^2 keeps z finite there.
+        var_floor = (1e-4 * np.abs(ref)) ** 2 + 1e-12
         d = wref - ref
         print()
         print(f'converged images: whitted {by_role["wref"]["spp"]} spp '
@@ -131,7 +134,7 @@ def main(runs_path):
             # Block means of the difference against their standard error: the sum of the pixels'
             # variance estimates (k*k*3 of them, so the estimate has ~k*k degrees of freedom).
             db = block_means(d, k)
-            vb = block_means(var_w + var_ref, k) / (k * k)
+            vb = block_means(var_w + var_ref + var_floor, k) / (k * k)
             z = db / np.sqrt(np.maximum(vb, 1e-30))
             n = z.size
             expected = n * math.erfc(4 / math.sqrt(2))

@@ -21,7 +21,8 @@
 # - the camera: `angle` is the full vertical field of view (sensor fit vertical); near clip 1e-4.
 # - Cycles on the CPU, T threads, N samples, no adaptive sampling, no denoising, no clamping,
 #   caustics on, no filter glossy, light tree off where Blender has one, light threshold 0 (all
-#   lights sampled), max bounces D for every
+#   lights sampled), max bounces D - 1 for every (whitted's --max-depth D counts the direct-light
+#   segment as 1, Cycles' bounces do not)
 #   kind, box pixel filter 1 pixel wide (each sample uniformly placed in its pixel, as whitted's),
 #   Standard view transform; the output is a 32-bit float OpenEXR of linear radiance.
 # Prints one line "cycles_render_seconds S": the time of the render call alone (scene sync, BVH
@@ -460,10 +461,12 @@ def build_and_render(args):
     c.caustics_refractive = True
     set_if(c, 'use_light_tree', False)
     c.light_sampling_threshold = 0.0  # else lights below 1% of the total are skipped (a bias)
-    c.max_bounces = args.max_depth
+    # whitted's --max-depth 1 is direct light only, which is Cycles' 0 bounces.
+    bounces = max(args.max_depth - 1, 0)
+    c.max_bounces = bounces
     for kind in ('diffuse_bounces', 'glossy_bounces', 'transmission_bounces', 'volume_bounces',
                  'transparent_max_bounces'):
-        setattr(c, kind, args.max_depth)
+        setattr(c, kind, bounces)
     c.pixel_filter_type = 'BOX'
     c.filter_width = 0.01 if args.normals else 1.0  # --normals: every sample through the pixel centre
     c.film_exposure = 1.0
