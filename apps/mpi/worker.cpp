@@ -43,7 +43,7 @@ int run_worker(const RankSetup& s) {
             } else if (st.MPI_TAG == kAssign) {
                 --in_flight;
                 std::vector<int> tiles(std::size_t(count) / sizeof(std::int32_t));
-                std::memcpy(tiles.data(), msg.data(), tiles.size() * sizeof(std::int32_t));
+                if (!tiles.empty()) std::memcpy(tiles.data(), msg.data(), tiles.size() * sizeof(std::int32_t));
                 if (tiles.empty()) no_more = true;
                 else queue.push(std::move(tiles));
             }
