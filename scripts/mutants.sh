@@ -189,6 +189,12 @@ mkdir -p "$src"
         cp "$root/$f" "$src/$f"
     fi
 done
+# Files the tree no longer has go from the copy too (a deleted source would still be globbed).
+if [[ -d "$src" ]]; then
+    (cd "$src" && find . -type f ! -path './.git/*' -printf '%P\0') | while IFS= read -r -d '' f; do
+        [[ -e "$root/$f" ]] || rm -f "$src/$f"
+    done
+fi
 export WHITTED_SHARED_DIR="${WHITTED_SHARED_DIR:-$(cd "$root/.." && pwd)/shared}"
 
 echo "== scratch build in $build (the first one takes a while)"
