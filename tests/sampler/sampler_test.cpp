@@ -45,6 +45,8 @@ TEST(Sampler, IsAPureFunctionOfPixelIndexAndDimension) {
     for (std::uint32_t i = 0; i < 64; ++i) EXPECT_EQ(a.get2d({9, 2, i}, 5), b.get2d({9, 2, i}, 5));
     // Other pixels, dimensions and seeds give other values.
     EXPECT_NE(a.get2d({9, 2, 0}, 5), a.get2d({9, 3, 0}, 5));
+    EXPECT_NE(a.get2d({9, 2, 0}, 5), a.get2d({10, 2, 0}, 5));  // neighbours in a row differ too
+    EXPECT_NE(a.pixel_offset({9, 2, 3}), a.pixel_offset({10, 2, 3}));
     EXPECT_NE(a.get2d({9, 2, 0}, 5), a.get2d({9, 2, 0}, 6));
     EXPECT_NE(a.get2d({9, 2, 0}, 5), Sampler(1, 64, 1).get2d({9, 2, 0}, 5));
 }
