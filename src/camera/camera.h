@@ -20,6 +20,18 @@ struct Camera {
     // corner (a pixel's centre is at +0.5; row 0 is the top), from the lens point that `lens`
     // (in [0, 1)², (0.5, 0.5) = the lens centre) picks. A pinhole ignores `lens`.
     Ray generate_ray(int width, int height, float x, float y, glm::vec2 lens) const;
+    // The pinhole ray (also the lens centre's, to the bit): inline, as it is the ray of every
+    // one-sample render.
+    Ray pinhole_ray(int width, int height, float x, float y) const {
+        return Ray{eye, glm::normalize(through(width, height, x, y))};
+    }
+    // The point of the plane at distance 1 along `forward` that image position (x, y) shows.
+    glm::vec3 through(int width, int height, float x, float y) const {
+        const float aspect = float(width) / float(height);
+        const float sx = (2.0f * x / float(width) - 1.0f) * tan_half_fov * aspect;
+        const float sy = (1.0f - 2.0f * y / float(height)) * tan_half_fov;
+        return forward + sx * right + sy * up;  // its forward component is 1
+    }
     bool is_pinhole() const { return !(lens_radius > 0.0f); }
 };
 

@@ -35,14 +35,18 @@ LinearImage Film::to_linear() const {
 }
 
 void Film::write_to(Image& image, const PixelRegion& r) const {
-    for (int y = r.y0; y < r.y1; ++y)
-        for (int x = r.x0; x < r.x1; ++x) {
-            const glm::vec3 c = at(x, y).value();
-            std::uint8_t* p = &image.rgb[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 3];
+    // Row by row through both arrays (a one-sample 1080p render converts two million pixels).
+    const std::size_t n = std::size_t(r.x1 - r.x0);
+    for (int y = r.y0; y < r.y1; ++y) {
+        const FilmPixel* from = &at(r.x0, y);
+        std::uint8_t* p = &image.rgb[(std::size_t(y) * std::size_t(image.width) + std::size_t(r.x0)) * 3];
+        for (std::size_t i = 0; i < n; ++i, p += 3) {
+            const glm::vec3 c = from[i].value();
             p[0] = to_byte(c.x);
             p[1] = to_byte(c.y);
             p[2] = to_byte(c.z);
         }
+    }
 }
 
 }  // namespace whitted

@@ -48,16 +48,18 @@ private:
     ShadingPoint shading_point(const Ray& ray, const Hit& hit) const;
     static bool faces_light(const ShadingPoint& p, const LightSample& ls);
     static bool query_from_light(const Light& light, const LightSample& ls, const glm::vec3& start);
-    LightSample light_sample(std::size_t li, const glm::vec3& point, int depth, const SampleContext& ctx) const;
+    // (light_sample, through_glass and secondary_direction are inline: called per light and
+    // per bounce, they are a test and a call in the common case.)
+    inline LightSample light_sample(std::size_t li, const glm::vec3& point, int depth, const SampleContext& ctx) const;
     glm::vec3 shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight, const SampleContext& ctx,
                        RayCounts& counts, const PacketShadows* shadows, int lane) const;
-    glm::vec3 through_glass(const LightSample& ls, const glm::vec3& start) const;
+    inline glm::vec3 through_glass(const LightSample& ls, const glm::vec3& start) const;
     glm::vec3 shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start) const;
     glm::vec3 trace(const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx,
                     RayCounts& counts) const;
     // The direction of a reflected or refracted ray: the ideal one, or with gloss one drawn from
     // the lobe around it (false: it fell on the wrong side of the surface and carries nothing).
-    bool secondary_direction(const glm::vec3& ideal, const glm::vec3& n, bool above, float gloss,
+    inline bool secondary_direction(const glm::vec3& ideal, const glm::vec3& n, bool above, float gloss,
                              std::uint32_t dim, const SampleContext& ctx, glm::vec3& out) const;
 
     int max_depth_;

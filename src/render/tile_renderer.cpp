@@ -35,9 +35,9 @@ glm::vec3 TileRenderer::displayed(const glm::vec3& c) {
     return c;
 }
 
-Ray TileRenderer::camera_ray(const Sampler& sampler, int x, int y, std::uint32_t index) const {
+inline Ray TileRenderer::camera_ray(const Sampler& sampler, int x, int y, std::uint32_t index) const {
     if (sampler.centred())  // the pixel's centre through the lens centre: no sampler arithmetic per ray
-        return camera_.generate_ray(job_.width, job_.height, float(x) + 0.5f, float(y) + 0.5f, glm::vec2(0.5f));
+        return camera_.pinhole_ray(job_.width, job_.height, float(x) + 0.5f, float(y) + 0.5f);
     const SampleKey key{std::uint32_t(x), std::uint32_t(y), index};
     const glm::vec2 at = sampler.pixel_offset(key);
     return camera_.generate_ray(job_.width, job_.height, float(x) + at.x, float(y) + at.y,
