@@ -35,7 +35,7 @@ float PathLights::world_area(const Instance& inst) {
     for (int i = 0; i < k; ++i)
         for (int j = 0; j < k; ++j) {
             const ShapeSample s = sample_unit_shape(inst.kind, {(float(i) + 0.5f) / k, (float(j) + 0.5f) / k});
-            sum += area_scale(inst, unit_shape_normal(inst.kind, s.part, s.p));
+            sum += area_scale(inst, unit_shape_area_normal(inst.kind, unit_shape_normal(inst.kind, s.part, s.p)));
         }
     return float(sum / (k * k) * unit_shape_area(inst.kind));
 }
@@ -46,9 +46,7 @@ PathLights::PathLights(const Scene& scene) : scene_(scene) {
     for (std::uint32_t i = 0; i < flat.instances.size(); ++i) {
         const glm::vec3& e = scene.material(i).emit;
         if (std::max(e.x, std::max(e.y, e.z)) <= 0.0f) continue;
-        // A shape without an area sampler (the ellipsoid) still lights the scene: BSDF sampling
-        // finds it, with its full weight, since next-event estimation never picks it.
-        if (unit_shape_area(flat.instances[i].kind) <= 0.0f) continue;
+        if (unit_shape_area(flat.instances[i].kind) <= 0.0f) continue;  // no shape kind without a sampler
         lights_.push_back({std::int32_t(i), -1});
         power.push_back(std::max(1e-12f, luminance(e) * world_area(flat.instances[i]) * kPi));
     }
@@ -92,7 +90,7 @@ AreaLightSample PathLights::sample_area(std::uint32_t instance, glm::vec2 u) con
 
 float PathLights::pdf_area(std::uint32_t instance, const glm::vec3& n_object) const {
     const Instance& inst = scene_.flat.instances[instance];
-    return 1.0f / (unit_shape_area(inst.kind) * area_scale(inst, n_object));
+    return 1.0f / (unit_shape_area(inst.kind) * area_scale(inst, unit_shape_area_normal(inst.kind, n_object)));
 }
 
 }  // namespace whitted

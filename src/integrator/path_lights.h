@@ -34,7 +34,8 @@ public:
     // The probability of choosing the area light on `instance` (0 if it emits nothing).
     float choice_probability(std::uint32_t instance) const;
 
-    // A point uniform by object-space area on the instance's shape, and its world-area density.
+    // A point of the instance's shape (uniform by object-space area; the ellipsoid's, uniform on the
+    // sphere it is mapped from), and its world-area density.
     AreaLightSample sample_area(std::uint32_t instance, glm::vec2 u) const;
     // The world-area density of sample_area at a point of the instance whose object-space normal
     // is n_object (the same density it sampled with).

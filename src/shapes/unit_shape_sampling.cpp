@@ -38,6 +38,7 @@ float unit_shape_area(ShapeKind kind) {
         case ShapeKind::Sphere: return kPi;
         case ShapeKind::Cylinder: return kPi + 2.0f * kDisc;
         case ShapeKind::Cone: return kConeSide + kDisc;
+        case ShapeKind::Ellipsoid: return 4.0f * kPi;  // the unit sphere it is mapped from
         default: return 0.0f;
     }
 }
@@ -76,8 +77,19 @@ ShapeSample sample_unit_shape(ShapeKind kind, glm::vec2 u) {
             const float t = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
             return {{0.5f * t * std::cos(phi), 0.5f - t, 0.5f * t * std::sin(phi)}, kPartSide};
         }
+        case ShapeKind::Ellipsoid: {
+            const float y = 1.0f - 2.0f * u.x, r = std::sqrt(std::max(0.0f, 1.0f - y * y)), phi = 2.0f * kPi * u.y;
+            return {{r * std::cos(phi), 0.5f * y, r * std::sin(phi)}, kPartSide};
+        }
         default: return {glm::vec3(0.0f), kPartSide};
     }
+}
+
+glm::vec3 unit_shape_area_normal(ShapeKind kind, const glm::vec3& n) {
+    if (kind != ShapeKind::Ellipsoid) return n;
+    // n ∝ (p.x, 4p.y, p.z) = (q.x, 2q.y, q.z), so q ∝ (n.x, n.y/2, n.z), on the unit sphere.
+    const glm::vec3 q = glm::normalize(glm::vec3(n.x, 0.5f * n.y, n.z));
+    return 0.5f * glm::vec3(q.x, 2.0f * q.y, q.z);
 }
 
 }  // namespace whitted

@@ -144,7 +144,7 @@ TEST(PathIntegrator, PlaneUnderASphericalEmitterHasTheClosedFormIrradiance) {
 // The density sample_area draws points with, turned into a density of directions seen from inside
 // the shape, integrates to 1 over the sphere of directions: each direction meets the surface once.
 TEST(PathLights, AreaDensityIntegratesToOneUnderNonUniformScale) {
-    for (ShapeKind kind : {ShapeKind::Cube, ShapeKind::Sphere, ShapeKind::Cylinder, ShapeKind::Cone}) {
+    for (ShapeKind kind : {ShapeKind::Cube, ShapeKind::Sphere, ShapeKind::Cylinder, ShapeKind::Cone, ShapeKind::Ellipsoid}) {
         test::SceneBuilder b;
         const glm::mat4 m = glm::rotate(test::translate_scale({1, 2, 3}, {2.0f, 0.7f, 1.3f}), 0.6f,
                                         glm::normalize(glm::vec3(1, 2, 0.5f)));
@@ -180,6 +180,22 @@ TEST(PathLights, AreaDensityIntegratesToOneUnderNonUniformScale) {
         // The world area: the density's reciprocal summed over the shape, and PathLights' quadrature.
         EXPECT_GT(PathLights::world_area(inst), 0.0f);
     }
+}
+
+// The ellipsoid x² + 4y² + z² = 1 is the oblate spheroid of semi-axes a = 1, c = 1/2: its area is
+// 2πa² + (πc²/e)·ln((1 + e)/(1 − e)) with e² = 1 − c²/a². Under a scale s, a sphere's.
+TEST(PathLights, EllipsoidAreaIsTheSpheroidsClosedForm) {
+    const double e = std::sqrt(0.75), want = 2 * kPi + kPi * 0.25 / e * std::log((1 + e) / (1 - e));
+    for (float s : {1.0f, 2.0f}) {
+        test::SceneBuilder b;
+        b.add(ShapeKind::Ellipsoid, test::translate_scale({0, 0, 0}, glm::vec3(s)), test::emitter(glm::vec3(1.0f)));
+        const Scene scene = b.build();
+        EXPECT_NEAR(PathLights::world_area(scene.flat.instances[0]), want * s * s, 1e-3 * want * s * s) << "scale " << s;
+    }
+    // Stretched by (1, 2, 1) it is the sphere of radius 1: 4π.
+    test::SceneBuilder b;
+    b.add(ShapeKind::Ellipsoid, test::translate_scale({0, 0, 0}, {1, 2, 1}), test::emitter(glm::vec3(1.0f)));
+    EXPECT_NEAR(PathLights::world_area(b.build().flat.instances[0]), 4 * kPi, 1e-3 * 4 * kPi);
 }
 
 // Pearson's chi-square test of a BSDF's samples against its pdf (as pbrt-v4's Chi2Test): directions
