@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <optional>
 #include <sstream>
+#include <string_view>
 #include <unordered_map>
 #include <utility>
 
@@ -50,6 +51,17 @@ constexpr const char* kShapeNames = "cube, cylinder, cone, sphere, ellipsoid";
 // Shapes of other labs whose geometry did not survive (§9.4): skipped with a warning.
 constexpr const char* kLostShapes = "cactus, cow";
 constexpr const char* kAllShapeWords = "cube, cylinder, cone, sphere, ellipsoid, cactus, cow, mesh";
+
+// Whether `word` is one of the comma-separated words of `list`.
+inline bool in_list(std::string_view word, std::string_view list) {
+    while (!list.empty()) {
+        const std::size_t end = list.find(',');
+        if (list.substr(0, end) == word) return true;
+        if (end == std::string_view::npos) break;
+        list.remove_prefix(std::min(list.size(), end + 2));  // ", "
+    }
+    return false;
+}
 
 // A token as it should appear in a message: quoted, printable, not absurdly long.
 inline std::string describe(const Token& t) {
@@ -329,6 +341,16 @@ private:
             next();
             skip_to_block_end(keyword, "'" + std::string(keyword.text) + "'");
             skipped = " and its bracketed block";
+        } else if (peek().kind == TokenKind::Word && pos_ + 1 < tokens_.size() &&
+                   tokens_[pos_ + 1].kind == TokenKind::Open &&
+                   parse_number(peek().text).status == NumberStatus::Invalid &&
+                   !in_list(peek().text, expected)) {
+            // `object cube [ … ]` where it does not belong: the word and its block go with it (one
+            // error, not a second one for 'cube').
+            const Token& word = next();
+            next();
+            skip_to_block_end(word, "'" + std::string(word.text) + "'");
+            skipped = " and " + describe(word) + " with its bracketed block";
         } else {
             int count = 0;
             while (peek().kind == TokenKind::Word &&
@@ -345,6 +367,9 @@ private:
                 error(keyword, "unexpected number " + describe(keyword) + where +
                                    " (expected a keyword: one of " + expected +
                                    "); does the keyword before it have too many numbers?");
+            else if (std::string_view(expected) == kSubgraphKeywords && in_list(keyword.text, kTransKeywords))
+                error(keyword, describe(keyword) + " cannot stand directly" + where +
+                                   ": it belongs inside a 'trans [ ... ]' block");
             else
                 error(keyword, "unknown keyword " + describe(keyword) + where +
                                    did_you_mean(keyword.text, suggestions ? suggestions : expected) +

@@ -63,6 +63,29 @@ TEST(ParseRecovery, AnErrorSkipsTheRestOfItsBlockOnly) {
     EXPECT_NE(e[2]->message.find("did you mean 'color'?"), std::string::npos);
 }
 
+// `object cube [ … ]` straight in a subgraph (a missing trans) is one error that says where it
+// belongs, not a second one for 'cube'; the unknown word's own block goes with it, so the next
+// line is read as usual. A valid keyword after an unknown one is not swallowed.
+TEST(ParseRecovery, AMisplacedObjectIsOneErrorWithItsBlock) {
+    const auto r = parse("mastersubgraph root [\n"
+                         "  object cube [ diffuse 0 1 0 ]\n"
+                         "  frobnicate trans [ object sphere [ shine 5 ] ]\n"
+                         "  trans [ object cone [ difuse 1 1 1 ] ]\n"
+                         "]\n");
+    const auto e = errors(r);
+    ASSERT_EQ(e.size(), 3u);
+    EXPECT_EQ(e[0]->loc.line, 2);
+    EXPECT_EQ(e[0]->loc.col, 3);
+    EXPECT_NE(e[0]->message.find("'object' cannot stand directly in mastersubgraph 'root' block: it belongs "
+                                 "inside a 'trans [ ... ]' block"),
+              std::string::npos)
+        << e[0]->str();
+    EXPECT_EQ(e[1]->loc.line, 3);  // frobnicate: its next word is a keyword of the block, read as one
+    EXPECT_NE(e[1]->message.find("unknown keyword 'frobnicate'"), std::string::npos) << e[1]->str();
+    EXPECT_EQ(e[2]->loc.line, 4);
+    EXPECT_NE(e[2]->message.find("did you mean 'diffuse'?"), std::string::npos) << e[2]->str();
+}
+
 TEST(ParseRecovery, TooManyErrorsEndWithACount) {
     std::string text = "mastersubgraph root [ trans [ object cube [\n";
     for (int i = 0; i < 30; ++i) text += "  bogus" + std::to_string(i) + " 1\n";

@@ -201,7 +201,9 @@ TEST(ParseStructure, UnknownKeywordsNameTheBlock) {
                          "camera, light, mastersubgraph)"));
     EXPECT_TRUE(error_at(
         parse("mastersubgraph root [ object cube ]"), 1, 23,
-        "unknown keyword 'object' in mastersubgraph 'root' block (expected one of: trans)"));
+        "'object' cannot stand directly in mastersubgraph 'root' block: it belongs inside a 'trans [ ... ]' block"));
+    EXPECT_TRUE(error_at(parse("mastersubgraph root [ objekt cube ]"), 1, 23,
+                         "unknown keyword 'objekt' in mastersubgraph 'root' block (expected one of: trans)"));
     EXPECT_TRUE(error_at(parse("mastersubgraph root [ trans [ shear 0 1 0 0.6 0 ] ]"), 1, 31,
                          "unknown keyword 'shear' in trans block"));
     EXPECT_TRUE(
