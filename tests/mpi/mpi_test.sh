@@ -130,6 +130,21 @@ scene_error)
     [[ $rc == 2 ]] || fail "exit code $rc, not 2"
     [[ $(grep -c "bad.sc:3:[0-9]*: error" "$out/log") == 1 ]] || fail "the error is not reported exactly once"
     [[ ! -e $out/mpi.png ]] || fail "an image was written" ;;
+hostile_input)
+    # Issue 15 on rank 0: /dev/zero is refused at once (it never ends), and a missing output folder
+    # before anything is loaded; every rank exits 3 and nothing is written.
+    timeout 60 "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" /dev/zero -o "$out/mpi.png" >"$out/log" 2>&1
+    rc=$?
+    cat "$out/log"
+    [[ $rc == 3 ]] || fail "/dev/zero: exit code $rc, not 3"
+    grep -q "it is not a regular file" "$out/log" || fail "/dev/zero: no message"
+    timeout 60 "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/no/such/dir/mpi.png" \
+        >"$out/log" 2>&1
+    rc=$?
+    cat "$out/log"
+    [[ $rc == 3 ]] || fail "missing folder: exit code $rc, not 3"
+    grep -q "the folder '$out/no/such/dir' does not exist" "$out/log" || fail "missing folder: no message"
+    [[ ! -e $out/mpi.png ]] || fail "an image was written" ;;
 mismatched_ranks)
     "${MPIRUN[@]}" -np 1 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/a.png" : \
         -np 1 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/a.png" --width 100 >"$out/log" 2>&1 && fail "accepted"
