@@ -5,8 +5,13 @@ set -euo pipefail
 # fluid: Debian's FLTK CMake package config names /usr/bin/fluid and stops find_package(FLTK) without it,
 # although whitted never runs fluid; libfltk1.3-dev only recommends it.
 # openmpi-bin, libopenmpi-dev: whitted-mpi (one image rendered across a cluster) and its tests run mpirun.
+# zlib1g-dev: PNG compression (stb's encoder is single-threaded, slow, and overflows past 1.4 GB).
+# libjpeg-dev: JPEG textures (Debian's stb aborts on an assertion with a corrupt Huffman table).
+# clang, libclang-rt-dev: the libFuzzer targets of fuzz/ (scripts/fuzz.sh); libFuzzer and clang's
+# sanitizer runtimes are in libclang-rt-dev, which clang only recommends.
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libcli11-dev libgtest-dev libgmock-dev
-          libbenchmark-dev libfltk1.3-dev fluid libopenexr-dev openmpi-bin libopenmpi-dev)
+          libbenchmark-dev libfltk1.3-dev fluid libopenexr-dev openmpi-bin libopenmpi-dev
+          clang libclang-rt-dev zlib1g-dev libjpeg-dev)
 if [[ "${1:-}" == "--viewer-test" ]]; then packages+=(xvfb x11-apps imagemagick xdotool tesseract-ocr); fi
 
 missing=()

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is needed, then builds and runs the whole test suite twice: a Release build,
-# and a build under AddressSanitizer + UndefinedBehaviorSanitizer.
+# and a build under AddressSanitizer + UndefinedBehaviorSanitizer; then fuzzes each target of fuzz/
+# for FUZZ_SECONDS (default 60) under the same sanitizers (scripts/fuzz.sh; FUZZ_SECONDS=0 skips it).
 #
 # No silent green: tests that need ../shared or the viewer fail when it is missing, unless
 # WHITTED_SKIP_SHARED_TESTS or WHITTED_SKIP_VIEWER_TESTS gives the reason to skip them; and this
@@ -42,3 +43,8 @@ cmake -S "$root" -B "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWHITT
 cmake --build "$root/build-asan" -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     run_ctest "$root/build-asan"
+
+if [[ "${FUZZ_SECONDS:-60}" != 0 ]]; then
+    echo "== libFuzzer targets, ${FUZZ_SECONDS:-60} s each (ASan + UBSan)"
+    "$root/scripts/fuzz.sh" "${FUZZ_SECONDS:-60}"
+fi

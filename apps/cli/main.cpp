@@ -1,6 +1,6 @@
 // whitted: the command-line renderer. Scene file in, image file out.
 // Exit codes: 0 success, 1 bad usage, 2 bad scene, 3 I/O failure (the scene cannot be read, the
-// image cannot be written, out of memory), 130 interrupted.
+// image cannot be written, out of memory), 4 --timeout ran out, 130 interrupted.
 #include <unistd.h>
 
 #include <iostream>
@@ -23,14 +23,21 @@ int run(int argc, char** argv) {
     CLI::App app{"whitted: a Whitted-style ray tracer for SceneView/Ray .sc scene files"};
     app.set_version_flag("--version", "whitted 0.1.0");
     app.footer("Exit codes: 0 done, 1 bad usage, 2 bad scene (FILE:LINE:COL: error: ...), 3 I/O failure, "
-               "130 interrupted (the part rendered so far is written).");
+               "4 --timeout ran out, 130 interrupted (the part rendered so far is written to NAME.partial.EXT).");
     RenderOptions o;
     add_render_options(app, o);
+    add_timeout_option(app, o);
     if (int code = parse_render_options(app, o, argc, argv, "whitted"); code != kExitOk) return code < 0 ? 0 : code;
+    // A missing folder or a read-only one is found now, not after a long render (as POV-Ray does).
+    if (std::string problem = output_unwritable(o.output); !problem.empty()) {
+        std::cerr << "whitted: error: " << problem << "\n";
+        return kExitIo;
+    }
 
     install_interrupt_handler();  // from here on Ctrl-C stops the load or the render
+    const Deadline deadline(o.timeout);
     LoadResult loaded = load_scene(o.scene_path, load_options(o, &interrupt_flag()));
-    if (int code = report_load(loaded, o, "whitted"); code != kExitOk) return code;
+    if (int code = report_load(loaded, o, "whitted", deadline.timed_out()); code != kExitOk) return code;
 
     RenderJob job = render_job(o, &interrupt_flag());
     ProgressLine progress(job.tile_count(), !o.quiet && isatty(STDERR_FILENO));
@@ -41,17 +48,26 @@ int run(int argc, char** argv) {
     RenderStats rs = render(*integrator, job, film);
     progress.finish();
 
+    // An interrupted render never replaces the output: a good image from an earlier run may be
+    // there (a batch timeout's SIGTERM must not destroy it). Its part goes beside it.
+    const std::string written = rs.cancelled ? partial_image_path(o.output) : o.output;
     // .exr and .pfm keep the linear values; the 8-bit formats get them clamped (§7).
-    const std::string err = is_linear_output(o.output) ? write_linear_image(film.to_linear(), o.output)
-                                                       : write_image(film.to_image(), o.output);
+    const std::string err = is_linear_output(written) ? write_linear_image(film.to_linear(), written)
+                                                      : write_image(film.to_image(), written);
     if (!err.empty()) {
         std::cerr << "whitted: error: " << err << "\n";
         return kExitIo;
     }
     if (o.stats) print_stats(loaded.stats, rs, job.sampling.samples_per_pixel());
+    if (rs.cancelled && deadline.timed_out()) {
+        std::cerr << "whitted: error: the time limit of " << o.timeout << " s (--timeout) ran out: wrote the "
+                  << rs.tiles_done << " of " << rs.tiles_total << " tiles rendered so far to " << written << " ("
+                  << o.output << " was not written)\n";
+        return kExitTimeout;
+    }
     if (rs.cancelled) {
         std::cerr << "whitted: interrupted: wrote the " << rs.tiles_done << " of " << rs.tiles_total
-                  << " tiles rendered so far to " << o.output << "\n";
+                  << " tiles rendered so far to " << written << " (" << o.output << " was not written)\n";
         return kExitInterrupted;
     }
     if (!o.quiet) std::cerr << "wrote " << o.output << "\n";

@@ -13,7 +13,7 @@ constexpr int kMaxWarningsShown = 50;
 
 }  // namespace
 
-int report_load(const LoadResult& loaded, const RenderOptions& o, const char* program) {
+int report_load(const LoadResult& loaded, const RenderOptions& o, const char* program, bool timed_out) {
     int warnings = 0;
     std::vector<Diagnostic> diagnostics = loaded.diagnostics;
     if (o.mode_name == "path")  // warnings that hold only there (§9.2)
@@ -22,6 +22,11 @@ int report_load(const LoadResult& loaded, const RenderOptions& o, const char* pr
         if (d.severity == Severity::Error || ++warnings <= kMaxWarningsShown) std::cerr << d.str() << "\n";
     if (warnings > kMaxWarningsShown)
         std::cerr << program << ": " << warnings - kMaxWarningsShown << " more warnings not shown\n";
+    if (loaded.cancelled && timed_out) {
+        std::cerr << program << ": error: the time limit of " << o.timeout << " s (--timeout) ran out while loading "
+                  << "the scene: nothing written\n";
+        return kExitTimeout;
+    }
     if (loaded.cancelled) {
         std::cerr << program << ": interrupted while loading the scene: nothing written\n";
         return kExitInterrupted;

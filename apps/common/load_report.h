@@ -8,8 +8,8 @@
 namespace whitted::cli {
 
 // Prints the load's warnings and errors to stderr. Returns kExitOk when there is a scene to
-// render, else the code to exit with (interrupted, bad scene, unreadable file).
-int report_load(const LoadResult& loaded, const RenderOptions& o, const char* program);
+// render, else the code to exit with (interrupted, --timeout ran out, bad scene, unreadable file).
+int report_load(const LoadResult& loaded, const RenderOptions& o, const char* program, bool timed_out = false);
 
 // The --stats lines of a load and a render.
 void print_stats(const LoadStats& ls, const RenderStats& rs, int samples_per_pixel);

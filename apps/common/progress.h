@@ -3,8 +3,13 @@
 #include <atomic>
 #include <chrono>
 #include <mutex>
+#include <string>
 
 namespace whitted::cli {
+
+// The line for a terminal `columns` wide: the longest of several forms that leaves the last
+// column free, down to the percentage alone.
+std::string progress_text(double fraction, double elapsed, double eta, int columns);
 
 class ProgressLine {
 public:

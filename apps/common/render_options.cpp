@@ -1,5 +1,6 @@
 #include "render_options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -7,6 +8,8 @@
 
 #include "film/image_io.h"
 #include "integrator/render_mode.h"
+#include "run_limits.h"
+#include "parse/read_file.h"
 
 namespace whitted::cli {
 namespace {
@@ -33,6 +36,10 @@ const CLI::Validator finite_number(
         return std::isfinite(std::strtof(s.c_str(), nullptr)) ? std::string() : "not a finite number: " + s;
     },
     "FINITE");
+
+const CLI::Validator memory_size(
+    [](std::string& s) { return parse_memory_size(s) ? std::string() : "not a size such as 512M or 4G: " + s; },
+    "SIZE");
 
 }  // namespace
 
@@ -67,16 +74,33 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
                    "degrees (0 = the still image)")
         ->check(finite_number);
     app.add_option("--threads", o.threads, "Worker threads (0 = all hardware threads)")->check(CLI::Range(0, 1024));
-    app.add_option("--texture-path", o.texture_dirs, "Extra directory to look for textures in (repeatable)")
+    // One directory per --texture-path (repeat it for more): a list would swallow the scene after it.
+    app.add_option("--texture-path", o.texture_dirs, "Extra directory to look for textures in (repeat for more)")
+        ->allow_extra_args(false)
         ->default_str("");
     app.add_option("--missing-textures", o.missing, "What to do with a texture that cannot be loaded")
         ->check(CLI::IsMember({"error", "checker"}));
+    app.add_option("--max-memory", o.max_memory_text,
+                   "Memory the image and scene may need, estimated before anything is built: a size such as 512M "
+                   "or 4G (default: three quarters of this machine's RAM)")
+        ->check(memory_size);
+    app.add_flag("--untrusted", o.untrusted,
+                 "For scene files you did not write: textures only from the scene's folder and --texture-path, and "
+                 "lower limits on file sizes, objects, textures, memory (1G) and time (60 s) (see the README)");
     app.add_flag("--lenient", o.lenient, "Skip unknown keywords and object types with a warning instead of failing");
     app.add_flag("-q,--quiet", o.quiet, "No progress line");
     app.add_flag("--stats", o.stats, "Print timings and ray counts");
 }
 
-std::string finish_render_options(RenderOptions& o) {
+void add_timeout_option(CLI::App& app, RenderOptions& o) {
+    app.add_option("--timeout", o.timeout,
+                   "Stop after this many seconds (load and render), keeping the part rendered as NAME.partial.EXT; "
+                   "0 = never")
+        ->check(CLI::Range(0.0, 1e7))
+        ->check(finite_number);
+}
+
+std::string finish_render_options(RenderOptions& o, bool timeout_given) {
     if (o.aa_threshold > 0.0f && o.spp > 1)
         return "--aa-threshold compares the colours of pixel centres, which --spp > 1 does not take; use "
                "--aa-threshold with --spp 1, or --spp alone";
@@ -87,6 +111,20 @@ std::string finish_render_options(RenderOptions& o) {
     if (std::string problem = output_problem(o.width, o.height, o.output); !problem.empty()) return problem;
     if (same_file(o.output, o.scene_path))
         return "the output '" + o.output + "' is the scene file itself; name another with -o";
+    using Untrusted = UntrustedLimits;
+    if (o.untrusted && (o.width > Untrusted::kImageSide || o.height > Untrusted::kImageSide))
+        return "--untrusted renders images of at most " + std::to_string(Untrusted::kImageSide) + "x" +
+               std::to_string(Untrusted::kImageSide) + " pixels (" + std::to_string(o.width) + "x" +
+               std::to_string(o.height) + " asked for)";
+    if (o.untrusted && !timeout_given) o.timeout = Untrusted::kSeconds;
+    o.max_memory = !o.max_memory_text.empty() ? *parse_memory_size(o.max_memory_text)
+                   : o.untrusted              ? Untrusted::kMemory
+                                              : default_max_memory();
+    o.for_image = image_memory(o.width, o.height, o.output);
+    if (o.for_image > o.max_memory)
+        return "a " + std::to_string(o.width) + "x" + std::to_string(o.height) + " image needs about " +
+               describe_bytes(o.for_image) + " of memory to render and write, more than the limit of " +
+               describe_bytes(o.max_memory) + " (--max-memory)";
     return "";
 }
 
@@ -101,7 +139,8 @@ int parse_render_options(CLI::App& app, RenderOptions& o, int argc, char** argv,
         if (app.get_option("--spp")->count() == 0) o.spp = 64;
         if (app.get_option("--max-depth")->count() == 0) o.max_depth = 64;
     }
-    if (std::string problem = finish_render_options(o); !problem.empty()) {
+    const CLI::Option* timeout = app.get_option_no_throw("--timeout");
+    if (std::string problem = finish_render_options(o, timeout && timeout->count() > 0); !problem.empty()) {
         std::cerr << program << ": error: " << problem << "\n";
         return kExitUsage;
     }
@@ -116,6 +155,8 @@ LoadOptions load_options(const RenderOptions& o, const std::atomic<bool>* cancel
     lo.time = o.time;
     lo.textures.search_dirs = o.texture_dirs;
     lo.textures.missing = o.missing == "checker" ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
+    if (o.max_memory > 0) lo.max_memory = o.max_memory - std::min(o.max_memory, o.for_image);
+    if (o.untrusted) apply_untrusted(lo);
     return lo;
 }
 

@@ -208,18 +208,19 @@ int Master::run() {
     checkpoint.flush(true);
 
     int code = cli::kExitOk;
+    // An interrupted job never replaces the output (a good image may be there): its part goes beside it.
+    const std::string written = schedule.all_done() ? s.options->output : partial_image_path(s.options->output);
     if (!mismatch.empty()) {
         std::cerr << "whitted-mpi: error: " << mismatch << "; nothing written\n";
         code = kExitMismatch;
-    } else if (std::string err = is_linear_output(s.options->output)
-                                     ? write_linear_image(film.to_linear(), s.options->output)
-                                     : write_image(film.to_image(), s.options->output);
+    } else if (std::string err = is_linear_output(written) ? write_linear_image(film.to_linear(), written)
+                                                           : write_image(film.to_image(), written);
                !err.empty()) {
         std::cerr << "whitted-mpi: error: " << err << "\n";
         code = cli::kExitIo;
     } else if (!schedule.all_done()) {
         std::cerr << "whitted-mpi: interrupted: wrote the " << schedule.done_count() << " of " << schedule.tile_count()
-                  << " tiles rendered so far to " << s.options->output << "\n";
+                  << " tiles rendered so far to " << written << " (" << s.options->output << " was not written)\n";
         code = cli::kExitInterrupted;
     } else if (!s.options->quiet) {
         std::cerr << "wrote " << s.options->output << "\n";

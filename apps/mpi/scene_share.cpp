@@ -10,7 +10,9 @@
 #include <iterator>
 #include <vector>
 
+#include "film/image_io.h"
 #include "load_report.h"
+#include "parse/read_file.h"
 #include "tiles.h"
 
 namespace whitted::mpi {
@@ -107,13 +109,19 @@ SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic
     std::vector<char> payload;
     const auto start = Clock::now();
     if (rank == 0) {
-        std::ifstream in(o.scene_path, std::ios::binary);
-        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        // Only regular files, within the size limit, stoppable (a FIFO or /dev/zero is refused).
+        FileContents file = read_regular_file(o.scene_path, lo.max_file_bytes, cancel);
         // An unreadable file: the library's own load says so, as whitted would.
         lo.textures.keep_files = true;
-        s.loaded = in.bad() || !in.is_open() ? load_scene(o.scene_path, lo) : load_scene_text(text, o.scene_path, lo);
-        s.code = cli::report_load(s.loaded, o, "whitted-mpi");
-        if (s.code == 0) payload = pack(text, s.loaded.texture_files);
+        if (std::string problem = output_unwritable(o.output); !problem.empty()) {
+            // A missing folder is found now, not after the render (rank 0 writes the image).
+            std::cerr << "whitted-mpi: error: " << problem << "\n";
+            s.code = cli::kExitIo;
+        } else {
+            s.loaded = !file.ok() ? load_scene(o.scene_path, lo) : load_scene_text(file.bytes, o.scene_path, lo);
+            s.code = cli::report_load(s.loaded, o, "whitted-mpi");
+        }
+        if (s.code == 0) payload = pack(file.bytes, s.loaded.texture_files);
         s.loaded.texture_files.clear();
         s.load_seconds = since(start);
     }

@@ -89,7 +89,9 @@ int main(int argc, char** argv) {
     app.add_option("--threads", o.settings.threads, "Worker threads (0 = all hardware threads)")
         ->check(CLI::Range(0, 1024));
     app.add_flag("--watch", o.watch, "Reload and render again when the scene file changes on disk");
-    app.add_option("--texture-path", o.texture_dirs, "Extra directory to look for textures in (repeatable)")
+    // One directory per --texture-path (repeat it for more): a list would swallow the scene after it.
+    app.add_option("--texture-path", o.texture_dirs, "Extra directory to look for textures in (repeat for more)")
+        ->allow_extra_args(false)
         ->default_str("");
     app.add_option("--missing-textures", missing, "A texture that cannot be found: ask for the file, or draw a checkerboard")
         ->check(CLI::IsMember({"ask", "checker"}));
@@ -125,6 +127,11 @@ int main(int argc, char** argv) {
         return 1;
     }
     if (!o.screenshot.empty()) o.exit_when_done = true;
+    // Nothing would ever be rendered, so "when done" would never come: say so instead of waiting.
+    if (o.exit_when_done && o.scene.empty()) {
+        std::cerr << "whitted-view: error: --screenshot and --exit-when-done need a scene file to render\n";
+        return 1;
+    }
     o.settings.integrator.mode = *parse_render_mode(mode_name);
     if (o.settings.integrator.mode == RenderMode::Path) {  // §9.2: a path tracer's defaults
         if (spp_option->count() == 0) o.settings.sampling.spp = 64;

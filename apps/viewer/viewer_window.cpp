@@ -291,6 +291,10 @@ void ViewerWindow::layout() {
     layout_status();
     // The image widget is as big as the image, or as the visible area if that is bigger.
     const int vw = std::max(scroll_->w(), view_->image.width), vh = std::max(scroll_->h(), view_->image.height);
+    // A smaller image than before: no scrolling past its end (the old position would show nothing).
+    const int max_x = vw - scroll_->w(), max_y = vh - scroll_->h();
+    if (scroll_->xposition() > max_x || scroll_->yposition() > max_y)
+        scroll_->scroll_to(std::min(scroll_->xposition(), max_x), std::min(scroll_->yposition(), max_y));
     view_->resize(scroll_->x() - scroll_->xposition(), scroll_->y() - scroll_->yposition(), vw, vh);
     scroll_->init_sizes();
     scroll_->redraw();
@@ -652,8 +656,7 @@ void ViewerWindow::choose_and_open() {
 }
 
 void ViewerWindow::save_image_as() {
-    Image img = controller_.image();
-    if (img.width == 0) {
+    if (controller_.image().width == 0) {
         set_message("error: nothing rendered yet");
         return;
     }
@@ -677,8 +680,14 @@ void ViewerWindow::save_image_as() {
         set_message("error: cannot write '" + path + "': use .png, .bmp, .ppm, .jpg or .jpeg");
         return;
     }
+    // The image as it is now, when the dialog has closed (the render went on meanwhile), not as it
+    // was when it opened; a render still running is saved as it stands, and the message says so.
+    const Image img = controller_.image();
+    const bool partial = is_busy(controller_.status().state);
     std::string err = write_image(img, path);
-    set_message(err.empty() ? "saved " + path : "error: " + err);
+    set_message(!err.empty() ? "error: " + err
+                : partial    ? "saved " + path + " while still rendering: the image is partial"
+                             : "saved " + path);
 }
 
 // The first render has ended and has been on screen for a moment: screenshot, ready file, exit.

@@ -9,15 +9,19 @@
 #include <filesystem>
 #include <random>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
 #include "film/exr_encode.h"
+#include "film/png_encode.h"
 
 namespace whitted {
 namespace {
+
+namespace fs = std::filesystem;
 
 std::string extension_of(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
@@ -81,6 +85,30 @@ struct FileSink {
     }
 };
 
+// `name` shortened (keeping its extension) to at most `max_bytes` bytes, not cutting a UTF-8
+// character in two: a file name may have 255 bytes, and names derived from it must fit too.
+std::string fit_name(const std::string& name, std::size_t max_bytes) {
+    if (name.size() <= max_bytes) return name;
+    std::string ext = fs::path(name).extension().string();
+    if (ext.size() >= max_bytes) ext.clear();
+    std::size_t keep = max_bytes - ext.size();
+    while (keep > 0 && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80) --keep;  // a continuation byte
+    return name.substr(0, keep) + ext;
+}
+
+constexpr std::size_t kMaxFileName = 255;  // bytes in one path component (NAME_MAX on Linux)
+
+// A fresh name in the target's directory (so that the rename is atomic): hidden, a random part
+// to keep concurrent writers apart, the extension last for readers that sniff it, never longer
+// than a file name may be, whatever the target's length.
+std::string temporary_beside(const std::string& path) {
+    const fs::path target(path);
+    std::random_device rd;
+    const std::string suffix = ".tmp" + std::to_string(rd() % 1000000) + extension_of(path);
+    const std::string stem = fit_name(target.stem().string(), kMaxFileName - 1 - suffix.size());
+    return (target.parent_path() / ("." + stem + suffix)).string();
+}
+
 // PFM: "PF", the size, a negative scale for little-endian floats, then the rows bottom to top.
 bool encode_pfm(const LinearImage& image, FileSink& sink) {
     static_assert(sizeof(glm::vec3) == 12);
@@ -95,10 +123,7 @@ bool encode_pfm(const LinearImage& image, FileSink& sink) {
 // byte is on the disk. encode(sink) returns false if the image could not be encoded.
 template <class Encode>
 std::string write_atomically(const std::string& path, Encode&& encode) {
-    // Same directory as the target, so that the rename is atomic; a random suffix keeps
-    // concurrent writers apart. The extension stays last for readers that sniff it.
-    std::random_device rd;
-    const std::string tmp = path + ".tmp" + std::to_string(rd() % 1000000) + extension_of(path);
+    const std::string tmp = temporary_beside(path);
     const WritingGuard guard(tmp);
     FileSink sink(tmp);
     const bool encoded = sink.ok && encode(sink);
@@ -128,15 +153,7 @@ LinearImage to_linear(const Image& image) {
 bool encode(const Image& image, const std::string& ext, FileSink& sink) {
     const int w = image.width, h = image.height;
     const auto* px = image.rgb.data();
-    if (ext == ".png") {
-        // stb tries all five PNG filters on every row and searches long match chains by default:
-        // half of a small render's whole run went into that. One filter (Sub) and stb's shortest
-        // chains encode 640×480 renders in half the time, the files 2–8% larger (measured on the
-        // bench and bundled scenes). Set once: these are stb's globals.
-        static const bool tuned = (stbi_write_png_compression_level = 5, stbi_write_force_png_filter = 1, true);
-        (void)tuned;
-        return stbi_write_png_to_func(FileSink::callback, &sink, w, h, 3, px, w * 3) != 0;
-    }
+    if (ext == ".png") return encode_png(image, [&](const void* data, std::size_t size) { sink.write(data, size); });
     if (ext == ".bmp") return stbi_write_bmp_to_func(FileSink::callback, &sink, w, h, 3, px) != 0;
     if (ext == ".jpg" || ext == ".jpeg") return stbi_write_jpg_to_func(FileSink::callback, &sink, w, h, 3, px, 95) != 0;
     const std::string header = "P6\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
@@ -162,11 +179,12 @@ std::string output_problem(int width, int height, const std::string& path) {
         return "cannot write '" + path + "': unknown image format (use .png, .bmp, .ppm, .jpg, .jpeg, .exr or .pfm)";
     if (width <= 0 || height <= 0) return "cannot write '" + path + "': the image is empty";
     const std::string ext = extension_of(path);
-    // stb's PNG and BMP writers count the whole file in an int (and JPEG its size in 16 bits).
-    const std::size_t row = std::size_t(width) * 3 + 4;  // with a PNG filter byte or BMP padding
-    if ((ext == ".png" || ext == ".bmp") && row * std::size_t(height) > std::size_t(INT_MAX) - 1024)
-        return "cannot write '" + path + "': " + std::to_string(width) + "x" + std::to_string(height) +
-               " is too large for " + ext + " (over 2 GB of pixels); use .ppm";
+    const std::string too_large = "cannot write '" + path + "': " + std::to_string(width) + "x" +
+                                  std::to_string(height) + " is too large for " + ext;
+    // stb's BMP writer puts the file size, 54 + (3w rounded up to 4)·h, in an int.
+    const std::uint64_t bmp_row = (std::uint64_t(width) * 3 + 3) / 4 * 4;
+    if (ext == ".bmp" && 54 + bmp_row * std::uint64_t(height) > std::uint64_t(INT_MAX))
+        return too_large + " (over 2 GB); use .ppm";
     if ((ext == ".jpg" || ext == ".jpeg") && (width > 65535 || height > 65535))
         return "cannot write '" + path + "': JPEG images are at most 65535 pixels wide and high; use .png or .ppm";
     return "";
@@ -196,6 +214,29 @@ std::string write_linear_image(const LinearImage& image, const std::string& path
         return exr ? encode_exr(image, sink.file) && (std::fflush(sink.file) == 0 || (sink.ok = false, sink.error = errno, false))
                    : encode_pfm(image, sink);
     });
+}
+
+std::string partial_image_path(const std::string& path) {
+    const fs::path target(path);
+    const std::string ext = target.extension().string();
+    const std::string stem = fit_name(target.stem().string(), kMaxFileName - (".partial" + ext).size());
+    return (target.parent_path() / (stem + ".partial" + ext)).string();
+}
+
+std::string output_unwritable(const std::string& path) {
+    const std::string head = "cannot write '" + path + "': ";
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) return head + "it is a directory";
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty() && !fs::is_directory(parent, ec))
+        return head + "the folder '" + parent.string() + "' does not exist";
+    // What write_image will do first: create a file beside the target.
+    const std::string probe = temporary_beside(path);
+    const int fd = open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) return head + std::strerror(errno);
+    close(fd);
+    unlink(probe.c_str());
+    return "";
 }
 
 const char* image_file_being_written() {

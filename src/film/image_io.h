@@ -1,15 +1,16 @@
 #pragma once
 // Image files: written atomically in the format the extension names; read for tests and textures.
+#include <cstdint>
 #include <string>
 
 #include "film/image.h"
 
 namespace whitted {
 
-// Writes PNG (default), BMP, PPM (binary P6) or JPEG by the file's extension (case-insensitive);
-// .exr and .pfm get the 8-bit values as linear floats (value / 255).
-// The image goes to a temporary file beside the target, which is renamed over it only when
-// complete, so a failure never leaves a half-written image. Returns "" or an error message.
+// Writes PNG (default; zlib, film/png_encode.h), BMP, PPM (binary P6) or JPEG (stb) by the file's
+// extension (case-insensitive); .exr and .pfm get the 8-bit values as linear floats (value / 255).
+// The image goes to a temporary file beside the target (hidden: .NAME.tmpNNNNNN.EXT), which is
+// renamed over it only when complete, so a failure never leaves a half-written image. Returns "" or an error message.
 std::string write_image(const Image& image, const std::string& path);
 
 // The temporary file a write_image call is writing right now, or nullptr. For a signal handler
@@ -20,6 +21,14 @@ const char* image_file_being_written();
 // Why write_image would refuse a width × height image at `path` (an unknown extension, a size
 // the format cannot hold), or "": a frontend asks before spending a render on it.
 std::string output_problem(int width, int height, const std::string& path);
+
+// Why the file `path` cannot be created, found before a render is spent on it (a missing folder,
+// no permission, a directory of that name), or "". Creates and removes a file beside it to know.
+std::string output_unwritable(const std::string& path);
+
+// Where an interrupted render's image goes instead of `path`, so that a good image there is never
+// replaced by a partial one: NAME.partial.EXT beside it (NAME shortened if it would not fit).
+std::string partial_image_path(const std::string& path);
 
 // True for the extensions write_image understands (.png .bmp .ppm .jpg .jpeg .exr .pfm).
 bool is_supported_output(const std::string& path);

@@ -7,6 +7,7 @@
 #include <utility>
 #include <unordered_map>
 
+#include "parse/read_file.h"
 #include "parse/transforms.h"
 
 namespace whitted {
@@ -69,37 +70,44 @@ Light to_light(const LightDesc& l) {
     return out;
 }
 
-// Number of instances each subgraph expands to, saturating instead of overflowing.
-class InstanceCounter {
+// What expanding each subgraph costs, saturating instead of overflowing: the instances it draws,
+// and the steps of the walk (the subgraph itself, each of its trans blocks, and the steps of
+// every referenced subgraph that draws something; one that draws nothing is never entered).
+class ExpansionCounter {
 public:
-    InstanceCounter(const SceneDescription& d, const SubgraphIndex& index)
-        : desc_(d), index_(index), memo_(d.subgraphs.size(), kUnknown) {}
+    ExpansionCounter(const SceneDescription& d, const SubgraphIndex& index)
+        : desc_(d), index_(index), instances_(d.subgraphs.size(), kUnknown), steps_(d.subgraphs.size(), 0) {}
 
     // Children before parents, with an explicit stack: a chain of subgraphs may be 100,000 long.
     // The parser guarantees there are no cycles.
-    std::size_t count(int root) {
+    void count(int root) {
         std::vector<std::pair<int, bool>> stack{{root, false}};  // subgraph, children pushed
         while (!stack.empty()) {
             auto [s, expanded] = stack.back();
-            if (memo_[s] != kUnknown) {
+            if (instances_[s] != kUnknown) {
                 stack.pop_back();
                 continue;
             }
             if (!expanded) {
                 stack.back().second = true;
                 for_each_child(s, [&](int child) {
-                    if (memo_[child] == kUnknown) stack.push_back({child, false});
+                    if (instances_[child] == kUnknown) stack.push_back({child, false});
                 });
                 continue;
             }
             stack.pop_back();
-            std::size_t n = 0;
+            std::size_t n = 0, steps = add(1, desc_.subgraphs[s].children.size());
             for (const TransDesc& t : desc_.subgraphs[s].children) n = add(n, t.objects.size());
-            for_each_child(s, [&](int child) { n = add(n, memo_[child]); });
-            memo_[s] = n;
+            for_each_child(s, [&](int child) {
+                n = add(n, instances_[child]);
+                if (instances_[child] > 0) steps = add(steps, steps_[child]);
+            });
+            instances_[s] = n;
+            steps_[s] = steps;
         }
-        return memo_[root];
     }
+    std::size_t instances(int s) const { return instances_[s]; }
+    std::size_t steps(int s) const { return steps_[s]; }
 
 private:
     template <class F>
@@ -112,7 +120,7 @@ private:
     static std::size_t add(std::size_t a, std::size_t b) { return a > kUnknown - 1 - b ? kUnknown - 1 : a + b; }
     const SceneDescription& desc_;
     const SubgraphIndex& index_;
-    std::vector<std::size_t> memo_;
+    std::vector<std::size_t> instances_, steps_;
 };
 
 }  // namespace
@@ -143,7 +151,7 @@ Camera make_camera(const CameraDesc& desc) {
     return cam;
 }
 
-FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances) {
+FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits) {
     FlattenResult result;
     FlatScene& scene = result.scene;
     scene.background = desc.background;
@@ -159,13 +167,31 @@ FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances) {
     }
 
     const SubgraphIndex index = index_subgraphs(desc);
-    InstanceCounter counter(desc, index);
-    std::size_t total = counter.count(desc.root);
-    if (total > max_instances) {
+    ExpansionCounter counter(desc, index);
+    counter.count(desc.root);
+    const std::size_t total = counter.instances(desc.root);
+    if (total > limits.max_instances) {
         result.diagnostics.push_back(
             {Severity::Error, desc.subgraphs[desc.root].loc,
              "the scene expands to " + std::to_string(total) + " objects through subgraph instancing, more than the limit of " +
-                 std::to_string(max_instances)});
+                 std::to_string(limits.max_instances)});
+        return result;
+    }
+    if (total > limits.max_bytes / kBytesPerInstance) {
+        result.diagnostics.push_back(
+            {Severity::Error, desc.subgraphs[desc.root].loc,
+             "the scene needs about " + describe_bytes(total * kBytesPerInstance) + " of memory (" +
+                 std::to_string(total) + " objects through subgraph instancing, about " +
+                 std::to_string(kBytesPerInstance) + " bytes each with the BVH), more than the limit of " +
+                 describe_bytes(limits.max_bytes) + " (--max-memory)"});
+        return result;
+    }
+    if (counter.steps(desc.root) > limits.max_steps) {
+        result.diagnostics.push_back(
+            {Severity::Error, desc.subgraphs[desc.root].loc,
+             "expanding the scene's subgraph instancing takes " + std::to_string(counter.steps(desc.root)) +
+                 " steps (trans blocks and subgraph references walked), more than the limit of " +
+                 std::to_string(limits.max_steps) + ": deep chains of subgraphs referenced many times"});
         return result;
     }
     scene.instances.reserve(total);
@@ -188,10 +214,16 @@ FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances) {
         int subgraph;
         glm::dmat4 parent;
     };
+    unsigned checks = 0;
     std::vector<Frame> stack{{desc.root, glm::dmat4(1.0)}};
     while (!stack.empty()) {
         Frame f = stack.back();
         stack.pop_back();
+        result.steps += 1 + desc.subgraphs[f.subgraph].children.size();
+        if (limits.cancel && (++checks & 1023) == 0 && limits.cancel->load(std::memory_order_relaxed)) {
+            result.cancelled = true;
+            return result;
+        }
         for (const TransDesc& t : desc.subgraphs[f.subgraph].children) {
             const glm::dmat4 world = f.parent * glm::dmat4(t.matrix);
             if (!t.objects.empty()) {
@@ -203,7 +235,10 @@ FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances) {
             for (const ObjectDesc& o : t.objects)
                 scene.instances.push_back(make_instance(world, o.kind, material_index(o)));
             for (const SubgraphRef& ref : t.subgraphs) {
-                if (int child = find_subgraph(index, ref.name); child >= 0) stack.push_back({child, world});
+                // A subgraph that draws nothing is not entered: 41 levels of doubling over an
+                // empty one would otherwise be 2^41 steps for no object at all.
+                const int child = find_subgraph(index, ref.name);
+                if (child >= 0 && counter.instances(child) > 0) stack.push_back({child, world});
             }
         }
     }

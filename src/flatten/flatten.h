@@ -1,5 +1,6 @@
 #pragma once
 // SceneDescription (a graph of mastersubgraphs) → FlatScene (one Instance per drawn object).
+#include <atomic>
 #include <cstddef>
 #include <vector>
 
@@ -15,13 +16,30 @@ struct FlattenResult {
     // later stages (textures) can point at the scene file.
     std::vector<const ObjectDesc*> material_sources;
     std::vector<Diagnostic> diagnostics;
-    bool ok() const { return !has_errors(diagnostics); }
+    std::size_t steps = 0;   // subgraph expansions and trans blocks walked (what the time was spent on)
+    bool cancelled = false;  // FlattenLimits::cancel was set: no error, an incomplete scene
+    bool ok() const { return !has_errors(diagnostics) && !cancelled; }
 };
 
-// Refuses scenes whose instancing would expand to more than `max_instances` objects
-// (a few nested subgraphs can multiply into billions), with an error instead of running
-// out of memory.
-FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances = 50'000'000);
+// What one object costs at the peak of a load: 56 bytes of Instance, about 25 of BVH nodes and the
+// build's temporary arrays (bench/RESULTS.md: 1M instances, 120 MB peak RSS of a whole CLI run;
+// issue 15 measured 4.9 GB for 48M, 102 bytes each). Rounded up: an estimate must not be low.
+constexpr std::size_t kBytesPerInstance = 128;
+
+struct FlattenLimits {
+    // A few nested subgraphs can multiply into billions of objects: refused, with an error,
+    // instead of running out of memory.
+    std::size_t max_instances = 50'000'000;
+    // The walk itself is bounded too: subgraphs that draw nothing are never entered, and what is
+    // left (trans blocks and references leading to objects) may not take more steps than this.
+    std::size_t max_steps = 200'000'000;
+    // Memory: the objects, at kBytesPerInstance each, may not need more than this.
+    std::size_t max_bytes = std::size_t(-1);
+    // Set by another thread (or a signal handler) to give up; checked every few thousand steps.
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits = {});
 
 // An instance of the unit shape `kind` placed by `object_to_world` (affine, invertible): keeps
 // the three rows of its inverse that intersection needs.

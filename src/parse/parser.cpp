@@ -1,9 +1,6 @@
 #include "parse/parser_impl.h"
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
+#include "parse/read_file.h"
 
 namespace whitted {
 
@@ -21,15 +18,13 @@ ParseResult parse_scene_file(const std::string& path, const ParseOptions& option
         result.unreadable = true;
         return result;
     };
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) return fail("it is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return fail(std::strerror(errno));
-    std::string text;
-    char buffer[65536];
-    while (in.read(buffer, sizeof buffer) || in.gcount() > 0)
-        text.append(buffer, static_cast<size_t>(in.gcount()));
-    if (in.bad()) return fail("read error");
+    FileContents file = read_regular_file(path, options.max_file_bytes, options.cancel);
+    if (file.cancelled) {
+        result.cancelled = true;
+        return result;
+    }
+    if (!file.ok()) return fail(file.error);
+    const std::string& text = file.bytes;
     return parse_scene_text(text, path, options);
 }
 

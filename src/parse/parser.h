@@ -1,5 +1,7 @@
 #pragma once
 // scene file → SceneDescription. Never throws, never crashes: problems come back as diagnostics.
+#include <atomic>
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -15,6 +17,11 @@ struct ParseOptions {
     bool lenient = false;
     // The scene time t of `velocity` and `angularrate` (scene-format.md §9.4): 0 is the still image.
     float time = 0;
+    // parse_scene_file reads no more than this (a scene of a million objects written out one by
+    // one is about 100 MB; tokens take up to 32 bytes per byte of text).
+    std::size_t max_file_bytes = std::size_t(256) << 20;
+    // parse_scene_file gives up reading when this is set (by another thread or a signal handler).
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 struct ParseResult {
@@ -23,6 +30,7 @@ struct ParseResult {
     // every problem of the file, up to a limit, then one error giving the count of the rest).
     std::vector<Diagnostic> diagnostics;
     bool unreadable = false;              // the file itself could not be read (an I/O failure)
+    bool cancelled = false;               // ParseOptions::cancel was set while the file was read
     bool ok() const { return !has_errors(diagnostics); }
 };
 
@@ -30,7 +38,8 @@ struct ParseResult {
 ParseResult parse_scene_text(std::string_view text, const std::string& file_name,
                              const ParseOptions& options = {});
 
-// Reads the file; an unreadable file is an error diagnostic with no position.
+// Reads the file (a regular file only, at most max_file_bytes); an unreadable file is an error
+// diagnostic with no position.
 ParseResult parse_scene_file(const std::string& path, const ParseOptions& options = {});
 
 }  // namespace whitted

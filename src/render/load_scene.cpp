@@ -1,5 +1,8 @@
 #include "render/load_scene.h"
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <chrono>
 
 #include "flatten/flatten.h"
@@ -23,13 +26,21 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     if (has_errors(result.diagnostics) || cancelled()) return result;
 
     auto t = Clock::now();
-    FlattenResult flat = flatten(parsed.scene);
+    FlattenLimits limits = options.limits;
+    limits.cancel = options.cancel;
+    limits.max_bytes = std::min(limits.max_bytes, options.max_memory);
+    FlattenResult flat = flatten(parsed.scene, limits);
     result.stats.flatten_seconds = since(t);
     for (auto& d : flat.diagnostics) result.diagnostics.push_back(d);
+    if (flat.cancelled) return result.cancelled = true, result;
     if (!flat.ok() || cancelled()) return result;
 
     t = Clock::now();
-    result.missing_textures = load_textures(flat, parsed.scene.path, options.textures, result.diagnostics,
+    TextureOptions textures = options.textures;
+    const std::size_t for_objects = flat.scene.instances.size() * kBytesPerInstance;
+    textures.limits.max_total_bytes =
+        std::min(textures.limits.max_total_bytes, options.max_memory - std::min(options.max_memory, for_objects));
+    result.missing_textures = load_textures(flat, parsed.scene.path, textures, result.diagnostics,
                                              &result.texture_files);
     result.stats.texture_seconds = since(t);
     if (has_errors(result.diagnostics) || cancelled()) return result;
@@ -50,9 +61,25 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
 
 }  // namespace
 
+std::size_t default_max_memory() {
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    if (pages <= 0 || page <= 0) return std::size_t(4) << 30;
+    return std::size_t(pages) / 4 * 3 * std::size_t(page);
+}
+
 LoadResult load_scene(const std::string& path, const LoadOptions& options) {
     auto t = Clock::now();
-    ParseResult parsed = parse_scene_file(path, {options.lenient, options.time});
+    ParseOptions parse_options;
+    parse_options.lenient = options.lenient;
+    parse_options.time = options.time;
+    parse_options.max_file_bytes = options.max_file_bytes;
+    parse_options.cancel = options.cancel;
+    ParseResult parsed = parse_scene_file(path, parse_options);
+    if (parsed.cancelled) {
+        LoadResult result;
+        result.cancelled = true;
+        return result;
+    }
     return finish(std::move(parsed), options, since(t));
 }
 

@@ -11,11 +11,19 @@
 
 namespace whitted {
 
+// Three quarters of this machine's RAM: what a scene may take by default.
+std::size_t default_max_memory();
+
 struct LoadOptions {
     bool lenient = false;
     float time = 0;   // scene time t for `velocity` / `angularrate` (scene-format.md §9.4)
     int threads = 0;  // for building the BVH; 0 = all hardware threads
     TextureOptions textures;
+    std::size_t max_file_bytes = ParseOptions{}.max_file_bytes;  // the scene file's size limit
+    FlattenLimits limits;  // objects drawn and steps of the instancing walk (limits.cancel is set from `cancel`)
+    // The memory the scene may need: its objects (estimated from the counts before any is made)
+    // and its textures together. Sets limits.max_bytes and what is left for textures.
+    std::size_t max_memory = default_max_memory();
     // Set by another thread (or a signal handler) to give up; checked between the load's stages.
     const std::atomic<bool>* cancel = nullptr;
 };

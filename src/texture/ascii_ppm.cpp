@@ -32,7 +32,7 @@ bool is_ascii_ppm(std::string_view bytes) {
            std::isspace(static_cast<unsigned char>(bytes[2]));
 }
 
-bool decode_ascii_ppm(std::string_view bytes, TextureImage& out, std::string& reason) {
+bool decode_ascii_ppm(std::string_view bytes, TextureImage& out, std::string& reason, const TextureLimits& limits) {
     std::size_t i = 2;
     long long w = 0, h = 0, maxval = 0;
     if (!next_number(bytes, i, w) || !next_number(bytes, i, h) || !next_number(bytes, i, maxval)) {
@@ -43,23 +43,31 @@ bool decode_ascii_ppm(std::string_view bytes, TextureImage& out, std::string& re
         reason = "unsupported plain PPM size or maximum value";
         return false;
     }
+    const std::string dims = std::to_string(w) + "x" + std::to_string(h);
+    const std::size_t texels = std::size_t(w) * std::size_t(h);
+    if (w > limits.max_side || h > limits.max_side)
+        reason = dims + " texels: more than " + std::to_string(limits.max_side) + " across or down";
+    else if (texels > limits.max_texels)
+        reason = dims + " texels: more than the limit of " + std::to_string(limits.max_texels) + " texels";
+    else if (texels * 3 > limits.max_total_bytes)
+        reason = dims + " texels need more than the memory left for textures";
+    if (!reason.empty()) return false;
     TextureImage img;
     img.width = int(w);
     img.height = int(h);
-    img.texels.resize(std::size_t(w * h));
-    for (glm::vec3& t : img.texels)
-        for (int c = 0; c < 3; ++c) {
-            long long v = 0;
-            if (!next_number(bytes, i, v)) {
-                reason = "the plain PPM ends before its last pixel (truncated or malformed)";
-                return false;
-            }
-            if (v > maxval) {
-                reason = "a plain PPM value is above its maximum " + std::to_string(maxval);
-                return false;
-            }
-            t[c] = float(v) / float(maxval);
+    img.rgb.resize(texels * 3);
+    for (std::uint8_t& byte : img.rgb) {
+        long long v = 0;
+        if (!next_number(bytes, i, v)) {
+            reason = "the plain PPM ends before its last pixel (truncated or malformed)";
+            return false;
         }
+        if (v > maxval) {
+            reason = "a plain PPM value is above its maximum " + std::to_string(maxval);
+            return false;
+        }
+        byte = std::uint8_t((v * 510 + maxval) / (2 * maxval));  // v / maxval · 255, rounded (integers: no ties lost)
+    }
     out = std::move(img);
     return true;
 }

@@ -5,13 +5,16 @@
 #include <string_view>
 
 #include "flatten/flat_scene.h"
+#include "texture/texture_decode.h"
 
 namespace whitted {
 
 bool is_ascii_ppm(std::string_view bytes);
 
-// Decodes a P3 file: texel = value / maxval (linear, as every texture). False with `reason` for a
-// malformed or truncated file, a value above maxval, or a size past 2^26 pixels.
-bool decode_ascii_ppm(std::string_view bytes, TextureImage& out, std::string& reason);
+// Decodes a P3 file: texel = value / maxval (linear, as every texture), stored as the nearest of
+// the 8-bit values (TextureImage). False with `reason` for a malformed or truncated file, a value
+// above maxval, or a size past the limits (checked on the header, before anything is allocated).
+bool decode_ascii_ppm(std::string_view bytes, TextureImage& out, std::string& reason,
+                      const TextureLimits& limits = {});
 
 }  // namespace whitted

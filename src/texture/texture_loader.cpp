@@ -2,75 +2,36 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <limits>
 #include <unordered_map>
 
-#include <stb/stb_image.h>
-
-#include "texture/ascii_ppm.h"
+#include "parse/read_file.h"
+#include "texture/texture_decode.h"
 
 namespace whitted {
 namespace fs = std::filesystem;
 namespace {
 
-// stb_image reads zeros past the end of a truncated BMP, TGA or PPM and reports success; such a
-// file decodes differently once bytes are appended. PNG's own checks already catch truncation.
-bool decoded_past_the_end(const std::vector<unsigned char>& bytes, const unsigned char* data, int w, int h) {
-    static const unsigned char kPng[] = {0x89, 'P', 'N', 'G'};
-    if (bytes.size() >= 4 && std::equal(kPng, kPng + 4, bytes.begin())) return false;
-    std::vector<unsigned char> padded(bytes);
-    padded.resize(bytes.size() + 4096, 0xFF);  // more than any one pixel's bytes
-    int pw = 0, ph = 0, pn = 0;
-    unsigned char* again = stbi_load_from_memory(padded.data(), int(padded.size()), &pw, &ph, &pn, 3);
-    const bool same = again && pw == w && ph == h && std::equal(data, data + std::size_t(w) * h * 3, again);
-    stbi_image_free(again);
-    return !same;
-}
-
-bool read_file(const std::string& path, std::vector<unsigned char>& bytes, std::string& reason) {
-    std::ifstream in(path, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    if (!in.good() && !in.eof()) {
-        reason = "cannot read '" + path + "'";
+// Reads (a regular file, no bigger than the limit, its size checked before a byte is read) and
+// decodes within what is left of the scene's texture memory; `bytes` keeps what was read.
+bool read_and_decode(const std::string& path, const TextureLimits& limits, TextureImage& out, std::string& bytes,
+                     std::string& reason) {
+    FileContents file = read_regular_file(path, limits.max_file_bytes);
+    if (!file.ok()) {
+        reason = "cannot read '" + path + "': " + file.error;
         return false;
     }
-    return true;
-}
-
-// Decodes the bytes of file `path` to linear floats (texel = byte / 255, no gamma decoding;
-// alpha ignored).
-bool decode(const std::vector<unsigned char>& bytes, const std::string& path, TextureImage& out, std::string& reason) {
-    if (bytes.size() > std::size_t(std::numeric_limits<int>::max())) {
-        reason = "cannot decode '" + path + "': the file is too large";
-        return false;
-    }
-    if (is_ascii_ppm(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()))) {
-        std::string why;
-        if (decode_ascii_ppm(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), out, why))
-            return true;
+    bytes = std::move(file.bytes);
+    if (std::string why = decode_texture(bytes, limits, out); !why.empty()) {
         reason = "cannot decode '" + path + "': " + why;
         return false;
     }
-    int w = 0, h = 0, n = 0;
-    unsigned char* data = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &n, 3);
-    if (!data) {
-        reason = std::string("cannot decode '") + path + "': " + (stbi_failure_reason() ? stbi_failure_reason() : "?");
-        return false;
-    }
-    if (decoded_past_the_end(bytes, data, w, h)) {
-        stbi_image_free(data);
-        reason = "cannot decode '" + path + "': the file ends before its last pixel (truncated)";
-        return false;
-    }
-    out.width = w;
-    out.height = h;
-    out.texels.resize(std::size_t(w) * h);
-    for (std::size_t i = 0; i < out.texels.size(); ++i)
-        out.texels[i] = glm::vec3(data[3 * i], data[3 * i + 1], data[3 * i + 2]) / 255.0f;
-    stbi_image_free(data);
     return true;
+}
+
+// True when `path` (canonical) is `root` (canonical) or inside it.
+bool is_inside(const fs::path& path, const fs::path& root) {
+    auto [r, p] = std::mismatch(root.begin(), root.end(), path.begin(), path.end());
+    return r == root.end() || (std::next(r) == root.end() && r->empty());  // "dir/" ends in an empty part
 }
 
 std::string tried_list(const std::vector<std::string>& tried) {
@@ -87,11 +48,10 @@ TextureImage checker_texture() {
     constexpr int kSquares = 8, kTexelsPerSquare = 8, kSize = kSquares * kTexelsPerSquare;
     TextureImage img;
     img.width = img.height = kSize;
-    img.texels.reserve(std::size_t(kSize) * kSize);
+    img.rgb.reserve(std::size_t(kSize) * kSize * 3);
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x)
-            img.texels.push_back(((x / kTexelsPerSquare + y / kTexelsPerSquare) & 1) ? glm::vec3(0.0f)
-                                                                                     : glm::vec3(1, 0, 1));
+            img.push_back(((x / kTexelsPerSquare + y / kTexelsPerSquare) & 1) ? glm::u8vec3(0) : glm::u8vec3(255, 0, 255));
     return img;
 }
 
@@ -178,6 +138,23 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
     std::unordered_map<std::string, std::string> name_of_file;  // resolved path → the first name that found it
     int checker = -1;
     auto& scene = flat.scene;
+    TextureLimits left = options.limits;  // max_total_bytes shrinks as textures are loaded
+    std::vector<fs::path> roots;  // where a confined texture may be
+    if (options.confined) {
+        std::error_code ec;
+        roots.push_back(fs::weakly_canonical(fs::absolute(fs::path(scene_path), ec).parent_path(), ec));
+        for (std::string d : options.search_dirs) {
+            std::replace(d.begin(), d.end(), '\\', '/');
+            roots.push_back(fs::weakly_canonical(fs::absolute(fs::path(d), ec), ec));
+        }
+    }
+    auto allowed = [&](const std::string& candidate) {
+        if (!options.confined) return true;
+        std::error_code ec;
+        const fs::path real = fs::weakly_canonical(candidate, ec);
+        if (ec) return false;
+        return std::any_of(roots.begin(), roots.end(), [&](const fs::path& r) { return is_inside(real, r); });
+    };
 
     for (std::size_t m = 0; m < scene.materials.size(); ++m) {
         const ObjectDesc* src = flat.material_sources[m];
@@ -190,19 +167,23 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
         if (options.preread) {
             // Another process did the search: decode what it found, or call the name missing.
             int index = -1;
+            std::string why = "not among the files received";
             if (auto f = options.preread->find(ref.file); f != options.preread->end()) {
                 TextureImage img;
-                std::string why;
-                if (decode(f->second, ref.file, img, why)) {
+                const std::string_view bytes(reinterpret_cast<const char*>(f->second.data()), f->second.size());
+                if (std::string problem = decode_texture(bytes, left, img); problem.empty()) {
+                    left.max_total_bytes -= img.rgb.size();
                     index = int(scene.textures.size());
                     scene.textures.push_back(std::move(img));
+                } else {
+                    why = "cannot decode '" + ref.file + "': " + problem;
                 }
             }
             if (index < 0) {
                 const bool as_checker = options.missing == MissingTexturePolicy::Checker;
-                missing.push_back({ref.file, ref.loc, {}, "not among the files received"});
+                missing.push_back({ref.file, ref.loc, {}, why});
                 diagnostics.push_back({as_checker ? Severity::Warning : Severity::Error, ref.loc,
-                                       "texture '" + ref.file + "': not among the files received"});
+                                       "texture '" + ref.file + "': " + why});
                 if (as_checker && checker < 0) {
                     checker = int(scene.textures.size());
                     scene.textures.push_back(checker_texture());
@@ -211,6 +192,16 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
             }
             index_of_name[ref.file] = index;
             scene.materials[m].texture = index;
+            continue;
+        }
+        std::string portable = ref.file;
+        std::replace(portable.begin(), portable.end(), '\\', '/');
+        if (options.confined && fs::path(portable).is_absolute()) {
+            diagnostics.push_back({Severity::Error, ref.loc,
+                                   "texture '" + ref.file + "': an absolute path, refused for a file from others "
+                                   "(--untrusted): name it relative to the scene's folder"});
+            missing.push_back({ref.file, ref.loc, {}, "an absolute path (--untrusted)"});
+            index_of_name[ref.file] = -1;
             continue;
         }
         std::vector<std::string> candidates;
@@ -225,7 +216,13 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
         for (const std::string& c : candidates) {
             tried.push_back(c);
             std::error_code ec;
-            if (!fs::is_regular_file(c, ec)) continue;
+            // Anything there is tried (and a device or a FIFO refused by name); nothing there is "not found".
+            if (!fs::exists(c, ec)) continue;
+            if (!allowed(c)) {
+                if (reason.empty())
+                    reason = "'" + c + "' is outside the scene's folder and the --texture-path folders (--untrusted)";
+                continue;
+            }
             std::string key = fs::weakly_canonical(c, ec).string();
             if (ec) key = fs::absolute(c).lexically_normal().string();
             if (auto f = index_of_file.find(key); f != index_of_file.end()) {
@@ -235,17 +232,18 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
             }
             TextureImage img;
             std::string why;
-            std::vector<unsigned char> bytes;
-            if (!read_file(c, bytes, why) || !decode(bytes, c, img, why)) {
+            std::string bytes;
+            if (!read_and_decode(c, left, img, bytes, why)) {
                 // Found but unreadable: remember why and keep looking; a later place may hold a good copy.
                 if (reason.empty()) reason = why;
                 continue;
             }
+            left.max_total_bytes -= img.rgb.size();
             index = int(scene.textures.size());
             scene.textures.push_back(std::move(img));
             index_of_file[key] = index;
             name_of_file[key] = ref.file;
-            if (kept && options.keep_files) (*kept)[ref.file] = std::move(bytes);
+            if (kept && options.keep_files) (*kept)[ref.file].assign(bytes.begin(), bytes.end());
             if (!reason.empty())
                 diagnostics.push_back({Severity::Warning, ref.loc,
                                        "texture '" + ref.file + "': skipped an unreadable file (" + reason +

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "flatten/flatten.h"
+#include "texture/texture_decode.h"
 
 namespace whitted {
 
@@ -31,6 +32,10 @@ struct TextureOptions {
     const TextureFiles* preread = nullptr;
     // Keep the bytes of every file a texture was decoded from (LoadResult::texture_files), to send on.
     bool keep_files = false;
+    // For files from others (--untrusted): a texture is read only from inside the scene file's
+    // folder or a search dir (after following links and `..`); absolute names are refused.
+    bool confined = false;
+    TextureLimits limits;  // per file, and max_total_bytes for all of a scene's textures together
 };
 
 struct MissingTexture {

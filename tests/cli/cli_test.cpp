@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "film/image_io.h"
+#include "cli/cli_scenes.h"
 #include "support/run_process.h"
 
 namespace whitted {
@@ -17,11 +18,9 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_process;
 using test::write_file;
+using test::kSimpleScene;
+using test::heavy_scene;
 
-const char* kSimpleScene = R"(camera [ eye 0 0 5 focus 0 0 0 ]
-light [ position 2 2 5 color 1 1 1 ]
-mastersubgraph root [ trans [ object sphere [ diffuse 1 0 0 ] ] ]
-)";
 
 TEST(Cli, RendersNextToTheSceneByDefault) {
     std::string dir = test::make_temp_dir();
@@ -65,9 +64,15 @@ TEST(Cli, BadUsageExitsOne) {
     EXPECT_EQ(run_process({test::cli_path(), "--aa-threshold", "nan"}).exit_code, 1);
     EXPECT_EQ(run_process({test::cli_path(), "x.sc", "-o", "out.gif"}).exit_code, 1);
     // A size the format cannot hold is refused before the render, not after it.
-    auto huge = run_process({test::cli_path(), "-o", "/tmp/never.png", "--width", "32768", "--height", "32768"});
+    auto huge = run_process({test::cli_path(), "-o", "/tmp/never.bmp", "--width", "32768", "--height", "32768"});
     EXPECT_EQ(huge.exit_code, 1);
-    EXPECT_NE(huge.output.find("32768x32768 is too large for .png"), std::string::npos) << huge.output;
+    EXPECT_NE(huge.output.find("32768x32768 is too large for .bmp"), std::string::npos) << huge.output;
+    // And memory: 32768 × 32768 pixels of 16 bytes of film and 3 of 8-bit image are 19 × 2^30
+    // bytes, 19.0 GiB, over a 2G --max-memory.
+    huge = run_process({test::cli_path(), "-o", "/tmp/never.png", "--width", "32768", "--height", "32768",
+                        "--max-memory", "2G"});
+    EXPECT_EQ(huge.exit_code, 1);
+    EXPECT_NE(huge.output.find("image needs about 19.0 GiB of memory"), std::string::npos) << huge.output;
     auto help = run_process({test::cli_path(), "--help"});
     EXPECT_EQ(help.exit_code, 0);
     EXPECT_NE(help.output.find("--max-depth INT:INT in [0 - 1000]=5"), std::string::npos) << help.output;
@@ -171,15 +176,6 @@ TEST(Cli, AWriteThatFailsMidwayExitsThreeAndKeepsTheOldImage) {
     }
     for (auto& e : fs::directory_iterator(dir))
         EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << "left behind: " << e.path();
-}
-
-// Many mirrors: seconds of work at a big size and depth 12, so an interrupt lands mid-render.
-std::string heavy_scene() {
-    std::string text = "camera [ eye 0 0 12 focus 0 0 0 ]\nlight [ position 3 3 10 color 1 1 1 ]\nmastersubgraph root [\n";
-    for (int i = 0; i < 400; ++i)
-        text += "trans [ translate " + std::to_string(i % 20 - 10) + " " + std::to_string(i / 20 - 10) +
-                " 0 object sphere [ reflect .9 .9 .9 transparent .5 .5 .5 ior 1.3 ] ]\n";
-    return text + "]\n";
 }
 
 // A scene whose load takes a while: one sphere instanced 10⁶ times through six levels of ten.
@@ -295,9 +291,10 @@ TEST(Cli, ASecondInterruptExitsAtOnceAndLeavesNoPartialFile) {
                                "--max-depth", "12", "-q"},
                              std::vector<int>{300, 300 + gap});
         EXPECT_EQ(r.exit_code, 130) << r.output;
-        if (fs::exists(out)) {  // the second Ctrl-C came after the image was complete
+        EXPECT_FALSE(fs::exists(out)) << "an interrupted render writes NAME.partial.EXT";
+        if (fs::exists(partial_image_path(out))) {  // the second Ctrl-C came after the image was complete
             Image img;
-            EXPECT_EQ(read_image(out, img), "");
+            EXPECT_EQ(read_image(partial_image_path(out), img), "");
             EXPECT_EQ(img.width, 4000);
         }
         for (auto& e : fs::directory_iterator(dir))
@@ -316,8 +313,11 @@ TEST(Cli, InterruptWritesThePartialImageAndExitsNonZero) {
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(r.exit_code, 130) << r.output;
     EXPECT_NE(r.output.find("interrupted"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("to " + dir + "/heavy.partial.png (" + out + " was not written)"), std::string::npos)
+        << r.output;
+    EXPECT_FALSE(fs::exists(out));
     Image img;
-    ASSERT_EQ(read_image(out, img), "") << "a valid image of what was done";
+    ASSERT_EQ(read_image(dir + "/heavy.partial.png", img), "") << "a valid image of what was done";
     EXPECT_EQ(img.width, 3000);
     EXPECT_EQ(img.at(2999, 2999), glm::u8vec3(0)) << "the unrendered part is black";
     // The whole render takes minutes; stopping within a tile row and writing the 9-megapixel PNG

@@ -90,9 +90,100 @@ TEST(Flatten, RefusesInstancingThatExplodes) {
         d.subgraphs.push_back(s);
     }
     d.root = 0;
-    FlattenResult r = flatten(d, 1'000'000);
+    FlattenResult r = flatten(d, {.max_instances = 1'000'000});
     ASSERT_FALSE(r.ok());
     EXPECT_NE(r.diagnostics[0].message.find("1099511627776"), std::string::npos) << r.diagnostics[0].message;
+}
+
+// 41 levels, each `trans [ subgraph s(i-1) subgraph s(i-1) ]`, over an s0 that draws nothing (issue
+// 15, finding 2): 0 objects, so the object limit passes, and the walk used to visit all 2^41
+// references (a day). A subgraph that draws nothing is never entered: the walk is root's one step
+// plus its one trans block.
+SceneDescription doubling_over_empty(int levels) {
+    SceneDescription d;
+    d.path = "empty_boom.sc";
+    for (int i = 0; i <= levels; ++i) {
+        SubgraphDesc s{i == levels ? "root" : "s" + std::to_string(i), {}, {}};
+        TransDesc t = trans(glm::mat4(1.0f));
+        if (i > 0) t.subgraphs = {{"s" + std::to_string(i - 1), {}}, {"s" + std::to_string(i - 1), {}}};
+        s.children.push_back(t);
+        d.subgraphs.push_back(s);
+    }
+    d.root = levels;
+    return d;
+}
+
+TEST(Flatten, NeverEntersSubgraphsThatDrawNothing) {
+    FlattenResult r = flatten(doubling_over_empty(41));
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r.scene.instances.size(), 0u);
+    EXPECT_EQ(r.steps, 2u);  // root itself and its one trans block
+}
+
+// A chain of 1,000 subgraphs down to one sphere, referenced 500 times from root: 500 objects
+// (under a limit of 1,000) but 500 × (1,000 subgraphs + 1,000 trans blocks) + root's 2 = 1,000,002
+// steps of walking. Refused from the counts, before any of it is walked.
+TEST(Flatten, BoundsTheStepsOfTheWalkNotOnlyTheObjects) {
+    SceneDescription d;
+    d.path = "long.sc";
+    constexpr int kChain = 1000, kRefs = 500;
+    for (int i = 0; i < kChain; ++i) {
+        SubgraphDesc s{"s" + std::to_string(i), {}, {}};
+        TransDesc t = trans(glm::mat4(1.0f));
+        if (i == 0) t.objects.push_back({ShapeKind::Sphere, {}, {}});
+        else t.subgraphs = {{"s" + std::to_string(i - 1), {}}};
+        s.children.push_back(t);
+        d.subgraphs.push_back(s);
+    }
+    SubgraphDesc root{"root", {}, {}};
+    TransDesc t = trans(glm::mat4(1.0f));
+    for (int k = 0; k < kRefs; ++k) t.subgraphs.push_back({"s" + std::to_string(kChain - 1), {}});
+    root.children.push_back(t);
+    d.subgraphs.push_back(root);
+    d.root = kChain;
+    FlattenResult ok = flatten(d, {.max_instances = 1000, .max_steps = 1'000'002});
+    ASSERT_TRUE(ok.ok());
+    EXPECT_EQ(ok.scene.instances.size(), std::size_t(kRefs));
+    EXPECT_EQ(ok.steps, 1'000'002u);
+    FlattenResult refused = flatten(d, {.max_instances = 1000, .max_steps = 1'000'001});
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.diagnostics[0].message.find("1000002 steps"), std::string::npos) << refused.diagnostics[0].message;
+    EXPECT_TRUE(refused.scene.instances.empty());
+}
+
+// 2^levels spheres: each level `trans [ subgraph s(i-1) subgraph s(i-1) ]` over one sphere.
+SceneDescription doubling_over_sphere(int levels) {
+    SceneDescription d = doubling_over_empty(levels);
+    d.subgraphs[0].children[0].objects.push_back({ShapeKind::Sphere, {}, {}});
+    return d;
+}
+
+// Issue 15, finding 9: the memory a scene needs is estimated from the counts, before any object
+// is made: 2^10 spheres at kBytesPerInstance (128) each is 131,072 bytes.
+TEST(Flatten, RefusesWhatExceedsTheMemoryLimitWithTheEstimate) {
+    const SceneDescription d = doubling_over_sphere(10);
+    static_assert(kBytesPerInstance == 128);
+    FlattenResult fits = flatten(d, {.max_bytes = 131'072});
+    ASSERT_TRUE(fits.ok());
+    EXPECT_EQ(fits.scene.instances.size(), 1024u);
+    FlattenResult refused = flatten(d, {.max_bytes = 131'071});
+    ASSERT_FALSE(refused.ok());
+    EXPECT_TRUE(refused.scene.instances.empty());
+    EXPECT_NE(refused.diagnostics[0].message.find("needs about 128.0 KiB of memory (1024 objects"), std::string::npos)
+        << refused.diagnostics[0].message;
+    EXPECT_NE(refused.diagnostics[0].message.find("more than the limit of 128.0 KiB (--max-memory)"), std::string::npos)
+        << refused.diagnostics[0].message;
+}
+
+TEST(Flatten, StopsWhenCancelled) {
+    // 2^16 spheres: 65,536 references walked unless the walk looks at the flag.
+    const SceneDescription d = doubling_over_sphere(16);
+    const std::atomic<bool> cancel{true};
+    FlattenResult r = flatten(d, {.cancel = &cancel});
+    EXPECT_TRUE(r.cancelled);
+    EXPECT_FALSE(r.ok());
+    EXPECT_LT(r.scene.instances.size(), 65536u);
+    EXPECT_EQ(flatten(d).scene.instances.size(), 65536u);
 }
 
 TEST(Flatten, AChainOfAHundredThousandSubgraphs) {

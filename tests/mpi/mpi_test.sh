@@ -50,7 +50,7 @@ start_slow_job() {
     done
     fail "no tile finished in 30 s"
 }
-tmp_files_left() { ls "$out" | grep -q '\.tmp'; }  # of the image or the checkpoint
+tmp_files_left() { ls -A "$out" | grep -q '\.tmp'; }  # of the image or the checkpoint
 
 case $case_name in
 whitted_scene) all_rank_counts "$src/scenes/showcase.sc" ;;
@@ -78,13 +78,17 @@ duplicate_mismatch)
     grep -q "to other bytes than the rank that rendered it first" "$out/log" || fail "no mismatch message"
     [[ ! -e $out/mpi.png ]] || fail "an image was written from disagreeing ranks" ;;
 ctrl_c)
-    # Ctrl-C on mpirun: SIGTERM to every rank; rank 0 writes the partial image atomically.
+    # Ctrl-C on mpirun: SIGTERM to every rank; rank 0 writes the partial image atomically, beside
+    # the output (issue 15: a good image already there is never replaced by a partial one).
+    printf 'good image' >"$out/mpi.png"
     start_slow_job
     kill -INT "$job"
     wait "$job"
     cat "$out/log"
-    grep -q "interrupted: wrote the [0-9]* of 108 tiles rendered so far" "$out/log" || fail "no partial write"
-    head -c 8 "$out/mpi.png" | od -An -c | grep -q "P   N   G" || fail "the partial image is not a PNG"
+    grep -q "interrupted: wrote the [0-9]* of 108 tiles rendered so far to $out/mpi.partial.png" "$out/log" ||
+        fail "no partial write"
+    head -c 8 "$out/mpi.partial.png" | od -An -c | grep -q "P   N   G" || fail "the partial image is not a PNG"
+    [[ "$(cat "$out/mpi.png")" == "good image" ]] || fail "the existing output was replaced"
     tmp_files_left && fail "temporary files left: $(ls "$out")"
     echo "ok" ;;
 sigterm_exit_code)
@@ -101,8 +105,10 @@ killed_rank_resume)
     start_slow_job
     kill -KILL $(pgrep -P "$job" | tail -1)
     wait "$job"
-    # mpirun sends SIGTERM to the ranks left: rank 0 may write the part it has, a whole PNG.
-    [[ ! -e $out/mpi.png ]] || head -c 8 "$out/mpi.png" | od -An -c | grep -q "P   N   G" || fail "not a PNG"
+    # mpirun sends SIGTERM to the ranks left: rank 0 may write the part it has, a whole PNG, beside the output.
+    [[ ! -e $out/mpi.png ]] || fail "a partial image was written over the output"
+    [[ ! -e $out/mpi.partial.png ]] || head -c 8 "$out/mpi.partial.png" | od -An -c | grep -q "P   N   G" ||
+        fail "not a PNG"
     tmp_files_left && fail "temporary files left: $(ls "$out")"
     [[ -s $out/ck ]] || { cat "$out/log"; fail "no checkpoint"; }
     same_as_reference 2 "$src/scenes/textures.sc" --threads 1 --tile-size 8 --resume "$out/ck" --checkpoint "$out/ck"
@@ -123,6 +129,21 @@ scene_error)
     cat "$out/log"
     [[ $rc == 2 ]] || fail "exit code $rc, not 2"
     [[ $(grep -c "bad.sc:3:[0-9]*: error" "$out/log") == 1 ]] || fail "the error is not reported exactly once"
+    [[ ! -e $out/mpi.png ]] || fail "an image was written" ;;
+hostile_input)
+    # Issue 15 on rank 0: /dev/zero is refused at once (it never ends), and a missing output folder
+    # before anything is loaded; every rank exits 3 and nothing is written.
+    timeout 60 "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" /dev/zero -o "$out/mpi.png" >"$out/log" 2>&1
+    rc=$?
+    cat "$out/log"
+    [[ $rc == 3 ]] || fail "/dev/zero: exit code $rc, not 3"
+    grep -q "it is not a regular file" "$out/log" || fail "/dev/zero: no message"
+    timeout 60 "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/no/such/dir/mpi.png" \
+        >"$out/log" 2>&1
+    rc=$?
+    cat "$out/log"
+    [[ $rc == 3 ]] || fail "missing folder: exit code $rc, not 3"
+    grep -q "the folder '$out/no/such/dir' does not exist" "$out/log" || fail "missing folder: no message"
     [[ ! -e $out/mpi.png ]] || fail "an image was written" ;;
 mismatched_ranks)
     "${MPIRUN[@]}" -np 1 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/a.png" : \

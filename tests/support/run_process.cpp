@@ -7,6 +7,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -65,10 +67,13 @@ ProcessResult run_process(const std::vector<std::string>& argv, int interrupt_af
     return run_process(argv, interrupt_after_ms >= 0 ? std::vector<int>{interrupt_after_ms} : std::vector<int>{});
 }
 
-ProcessResult run_in_terminal(const std::vector<std::string>& argv) {
+ProcessResult run_in_terminal(const std::vector<std::string>& argv, int columns) {
     ProcessResult result;
     int master = -1;
-    pid_t pid = forkpty(&master, nullptr, nullptr, nullptr);
+    struct winsize size {};
+    size.ws_row = 24;
+    size.ws_col = static_cast<unsigned short>(columns);
+    pid_t pid = forkpty(&master, nullptr, nullptr, &size);
     if (pid < 0) return result;
     if (pid == 0) exec_child(argv);
     read_all(master, result.output);  // ends with EIO once the child has gone
@@ -78,6 +83,12 @@ ProcessResult run_in_terminal(const std::vector<std::string>& argv) {
 }
 
 ProcessResult run_process(const std::vector<std::string>& argv, const std::vector<int>& interrupts_ms) {
+    std::vector<TimedSignal> signals;
+    for (int ms : interrupts_ms) signals.push_back({ms, SIGINT});
+    return run_process(argv, signals);
+}
+
+ProcessResult run_process(const std::vector<std::string>& argv, const std::vector<TimedSignal>& signals) {
     ProcessResult result;
     int pipe_fd[2];
     if (pipe(pipe_fd) != 0) return result;
@@ -96,17 +107,25 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::vecto
     }
     close(pipe_fd[1]);
     std::thread interrupter;
-    if (!interrupts_ms.empty())
-        interrupter = std::thread([pid, interrupts_ms] {
+    std::atomic<bool> exited{false};
+    if (!signals.empty())
+        interrupter = std::thread([pid, signals, &exited] {
             const auto start = std::chrono::steady_clock::now();
-            for (int ms : interrupts_ms) {
-                std::this_thread::sleep_until(start + std::chrono::milliseconds(ms));
-                kill(pid, SIGINT);  // harmless once the child has exited: it stays a zombie until waited for
+            for (const TimedSignal& s : signals) {
+                // Sleeps in short steps so that a finished child does not keep the test waiting
+                // for a last SIGKILL meant only for a hang.
+                const auto when = start + std::chrono::milliseconds(s.ms);
+                while (!exited && std::chrono::steady_clock::now() < when)
+                    std::this_thread::sleep_for(std::min<std::chrono::steady_clock::duration>(
+                        when - std::chrono::steady_clock::now(), std::chrono::milliseconds(20)));
+                if (exited) return;
+                kill(pid, s.signal);  // harmless once the child has exited: it stays a zombie until waited for
             }
         });
     read_all_until(pipe_fd[0], result.output, pid,
                    std::chrono::steady_clock::now() + std::chrono::seconds(kProcessDeadlineSeconds));
     close(pipe_fd[0]);
+    exited = true;  // (or at least closed its output: what is left is waiting for it)
     if (interrupter.joinable()) interrupter.join();
     result.exit_code = exit_code_of(pid);
     return result;

@@ -21,8 +21,15 @@ constexpr int kProcessDeadlineSeconds = 300;
 ProcessResult run_process(const std::vector<std::string>& argv, int interrupt_after_ms = -1);
 // The same, sending SIGINT at each of the given times (milliseconds from the start, increasing).
 ProcessResult run_process(const std::vector<std::string>& argv, const std::vector<int>& interrupts_ms);
+// The same, sending each signal at its time (milliseconds from the start, increasing); a last
+// {ms, SIGKILL} bounds a test whose program might hang.
+struct TimedSignal {
+    int ms;
+    int signal;
+};
+ProcessResult run_process(const std::vector<std::string>& argv, const std::vector<TimedSignal>& signals);
 // Runs argv with a pseudo-terminal as its stdin, stdout and stderr, as a user's shell would.
-ProcessResult run_in_terminal(const std::vector<std::string>& argv);
+ProcessResult run_in_terminal(const std::vector<std::string>& argv, int columns = 80);
 
 // A child process left running while the test watches it, its stdout and stderr going to a
 // file. Every wait has a deadline, so that a bug makes a test fail instead of hang.

@@ -42,7 +42,7 @@ std::unique_ptr<TextureLoad> load_names(const std::vector<std::string>& names, c
 }
 
 glm::u8vec3 texel_byte(const TextureImage& img, int x, int y) {
-    const glm::vec3 c = img.texels[std::size_t(y) * img.width + x] * 255.0f + 0.5f;
+    const glm::vec3 c = img.texel(std::size_t(y) * img.width + x) * 255.0f + 0.5f;
     return {std::uint8_t(c.x), std::uint8_t(c.y), std::uint8_t(c.z)};
 }
 
@@ -119,11 +119,11 @@ TEST_F(TextureLoader, TexelValuesAlphaAndGrey) {
     auto r = load_names({"alpha.png", "grey.png"}, scene_);
     ASSERT_TRUE(r->missing.empty()) << r->messages();
     const TextureImage& a = r->flat.scene.textures.at(r->flat.scene.materials[0].texture);
-    EXPECT_EQ(a.texels[0], glm::vec3(1.0f, 128 / 255.0f, 0.0f));
-    EXPECT_EQ(a.texels[1], glm::vec3(10, 20, 30) / 255.0f);
+    EXPECT_EQ(a.texel(0), glm::vec3(1.0f, 128 / 255.0f, 0.0f));
+    EXPECT_EQ(a.texel(1), glm::vec3(10, 20, 30) / 255.0f);
     const TextureImage& g = r->flat.scene.textures.at(r->flat.scene.materials[1].texture);
-    EXPECT_EQ(g.texels[1], glm::vec3(0.2f));
-    EXPECT_EQ(g.texels[2], glm::vec3(1.0f));
+    EXPECT_EQ(g.texel(1), glm::vec3(0.2f));
+    EXPECT_EQ(g.texel(2), glm::vec3(1.0f));
 }
 
 // ---- lookup order --------------------------------------------------------------------------------
@@ -346,10 +346,29 @@ TEST_F(TextureLoader, CheckerFallback) {
     // Magenta and black squares, big enough that bilinear filtering leaves them solid.
     const TextureImage& c = r->flat.scene.textures[0];
     int magenta = 0, black = 0;
-    for (const glm::vec3& t : c.texels) magenta += t == glm::vec3(1, 0, 1), black += t == glm::vec3(0);
-    EXPECT_EQ(magenta + black, int(c.texels.size()));
+    const std::size_t texels = std::size_t(c.width) * c.height;
+    for (std::size_t i = 0; i < texels; ++i)
+        magenta += c.texel(i) == glm::vec3(1, 0, 1), black += c.texel(i) == glm::vec3(0);
+    EXPECT_EQ(magenta + black, int(texels));
     EXPECT_EQ(magenta, black);
-    EXPECT_EQ(checker_texture().texels, c.texels);
+    EXPECT_EQ(checker_texture().rgb, c.rgb);
+}
+
+// Issue 15, findings 3 and 4: a texture is read only if it is a regular file, and its size is
+// checked before a byte is read (an 8 GB file was read whole, byte by byte, then refused).
+TEST_F(TextureLoader, ReadsOnlyRegularFilesWithinTheSizeLimit) {
+    // A sparse file just over the 256 MiB limit: refused from its size, nothing read.
+    const std::string big = dir_ + "/big.ppm";
+    write_text(big, "P6 1 1 255\n");
+    fs::resize_file(big, (std::uintmax_t(256) << 20) + 1);
+    auto r = load_names({"big.ppm"}, scene_);
+    ASSERT_EQ(r->missing.size(), 1u) << r->messages();
+    EXPECT_NE(r->missing[0].reason.find("it is 268435457 bytes, more than the limit of 256.0 MiB"), std::string::npos)
+        << r->missing[0].reason;
+    // A device never ends: refused as what it is, not read.
+    r = load_names({"/dev/zero"}, scene_);
+    ASSERT_EQ(r->missing.size(), 1u) << r->messages();
+    EXPECT_NE(r->missing[0].reason.find("not a regular file"), std::string::npos) << r->missing[0].reason;
 }
 
 }  // namespace

@@ -11,7 +11,7 @@ TextureImage make(int w, int h, std::vector<glm::vec3> texels) {
     TextureImage img;
     img.width = w;
     img.height = h;
-    img.texels = std::move(texels);
+    for (glm::vec3 t : texels) img.push_back(glm::u8vec3(glm::round(t * 255.0f)));
     return img;
 }
 

@@ -229,6 +229,24 @@ TEST(ViewerNoDisplay, HelpAndBadUsageNeedNoDisplay) {
     EXPECT_EQ(run_process({"/usr/bin/env", "-u", "DISPLAY", "ASAN_OPTIONS=" + asan_options_for_viewer(), WHITTED_VIEWER_PATH, "--mode", "fancy"}).exit_code, 1);
 }
 
+// Issue 15, finding 14: --screenshot / --exit-when-done with no scene waited forever for a render
+// that never came; now a usage error at once (before the display is needed).
+TEST(ViewerNoDisplay, AutomatedRunsNeedAScene) {
+    for (const char* flag : {"--exit-when-done", "--screenshot=x.png"}) {
+        auto r = run_process({"/usr/bin/env", "-u", "DISPLAY", "ASAN_OPTIONS=" + asan_options_for_viewer(),
+                              WHITTED_VIEWER_PATH, flag},
+                             std::vector<test::TimedSignal>{{20000, SIGKILL}});
+        EXPECT_EQ(r.exit_code, 1) << r.output;
+        EXPECT_NE(r.output.find("--screenshot and --exit-when-done need a scene file"), std::string::npos) << r.output;
+    }
+    // Finding 11: the scene after a --texture-path is the scene, not a second folder (it got as far
+    // as looking for a display).
+    auto r = run_process({"/usr/bin/env", "-u", "DISPLAY", "ASAN_OPTIONS=" + asan_options_for_viewer(),
+                          WHITTED_VIEWER_PATH, "--exit-when-done", "--texture-path", "/tmp", "scene.sc"});
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("whitted-view: error: no display"), std::string::npos) << r.output;
+}
+
 // What the viewer writes to its --ready-file (root-window coordinates).
 struct Box {
     int x = 0, y = 0, w = 0, h = 0;

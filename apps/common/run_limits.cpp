@@ -1,0 +1,49 @@
+#include "run_limits.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+#include "film/film.h"
+#include "film/image_io.h"
+
+namespace whitted::cli {
+
+std::optional<std::size_t> parse_memory_size(const std::string& text) {
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(text.c_str(), &end);
+    if (errno || end == text.c_str() || !std::isfinite(value) || value <= 0) return std::nullopt;
+    const std::string suffix(end);
+    double scale = 1;
+    if (suffix == "K" || suffix == "k") scale = 0x1p10;
+    else if (suffix == "M" || suffix == "m") scale = 0x1p20;
+    else if (suffix == "G" || suffix == "g") scale = 0x1p30;
+    else if (suffix == "T" || suffix == "t") scale = 0x1p40;
+    else if (!suffix.empty()) return std::nullopt;
+    if (value * scale >= 0x1p63 || value * scale < 1) return std::nullopt;
+    return std::size_t(value * scale);
+}
+
+std::size_t image_memory(int width, int height, const std::string& output) {
+    // The film (FilmPixel: a sum of 3 floats and a weight), then the copy the writer encodes:
+    // 3 floats a pixel for .exr/.pfm, 3 bytes for the 8-bit formats.
+    const std::size_t per_pixel = sizeof(FilmPixel) + (is_linear_output(output) ? 3 * sizeof(float) : 3);
+    return std::size_t(width) * std::size_t(height) * per_pixel;
+}
+
+void apply_untrusted(LoadOptions& options) {
+    using L = UntrustedLimits;
+    options.max_file_bytes = std::min(options.max_file_bytes, L::kSceneFileBytes);
+    options.limits.max_instances = std::min(options.limits.max_instances, L::kObjects);
+    options.limits.max_steps = std::min(options.limits.max_steps, L::kSteps);
+    TextureLimits& t = options.textures.limits;
+    t.max_file_bytes = std::min(t.max_file_bytes, L::kTextureFileBytes);
+    t.max_side = std::min(t.max_side, L::kTextureSide);
+    t.max_texels = std::min(t.max_texels, L::kTextureTexels);
+    options.textures.confined = true;
+}
+
+}  // namespace whitted::cli

@@ -1,0 +1,25 @@
+#pragma once
+// Image file bytes → TextureImage, refusing what would not fit: the dimensions are read from the
+// header and checked before a pixel is decoded, a file shorter than its header says is refused
+// (never decoded from memory past its end), and formats whitted does not document are refused.
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include "flatten/flat_scene.h"
+
+namespace whitted {
+
+struct TextureLimits {
+    std::size_t max_file_bytes = std::size_t(256) << 20;  // read no more of a texture file than this
+    int max_side = 16384;                                 // texels across or down
+    std::size_t max_texels = std::size_t(1) << 26;        // 64 Mi texels: 192 MB as 8-bit RGB
+    std::size_t max_total_bytes = std::size_t(1) << 30;   // all textures of a scene together, as stored
+};
+
+// Decodes PNG, BMP, TGA or binary PNM (P5/P6) with stb_image, JPEG with libjpeg (jpeg_decode.h),
+// plain PPM (P3) with ascii_ppm.h, into 8-bit RGB; alpha is dropped. Returns ""
+// or why not (without the file's name), e.g. "16384x16384 texels, more than the limit of ...".
+std::string decode_texture(std::string_view bytes, const TextureLimits& limits, TextureImage& out);
+
+}  // namespace whitted
