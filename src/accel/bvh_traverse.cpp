@@ -18,7 +18,6 @@ using bvh_detail::BoxTester;
 using bvh_detail::intersect_instance;
 using bvh_detail::lowest_bit;
 using bvh_detail::kStackSize;
-constexpr float kInf = std::numeric_limits<float>::infinity();
 
 struct StackEntry {
     std::uint32_t ref;

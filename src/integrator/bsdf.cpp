@@ -26,7 +26,7 @@ float energy_scale(const Material& m) {
 }
 
 Bsdf::Bsdf(const Material& m, const glm::vec3& diffuse, const glm::vec3& outward, const glm::vec3& wo)
-    : shine_(m.shine), gloss_(m.gloss), wo_(wo) {
+    : shine_(m.shine), gloss_(m.gloss) {
     const float s = energy_scale(m);
     weight_[0] = s * diffuse;
     weight_[1] = s * m.specular;

@@ -47,7 +47,7 @@ private:
     glm::vec3 weight_[4];  // diffuse, specular, reflect, transparent (energy-scaled)
     float p_[4];           // the probability of sampling each lobe
     float shine_, gloss_, eta_;
-    glm::vec3 wo_, n_, mirror_;
+    glm::vec3 n_, mirror_;
     glm::vec3 refracted_;  // the refraction lobe's ideal direction (the mirror one on total internal reflection)
     bool tir_;
 };
