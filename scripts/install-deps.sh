@@ -5,8 +5,10 @@ set -euo pipefail
 # fluid: Debian's FLTK CMake package config names /usr/bin/fluid and stops find_package(FLTK) without it,
 # although whitted never runs fluid; libfltk1.3-dev only recommends it.
 # openmpi-bin, libopenmpi-dev: whitted-mpi (one image rendered across a cluster) and its tests run mpirun.
+# libtinyobjloader-dev: reads the OBJ files of `object mesh` (scene-format.md §9.3).
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libcli11-dev libgtest-dev libgmock-dev
-          libbenchmark-dev libfltk1.3-dev fluid libopenexr-dev openmpi-bin libopenmpi-dev)
+          libbenchmark-dev libfltk1.3-dev fluid libopenexr-dev openmpi-bin libopenmpi-dev
+          libtinyobjloader-dev)
 if [[ "${1:-}" == "--viewer-test" ]]; then packages+=(xvfb x11-apps imagemagick xdotool tesseract-ocr); fi
 
 missing=()
