@@ -159,6 +159,8 @@ TEST_F(MeshScene, TwelveTriangleCubeRendersAsObjectCubeInEveryMode) {
         {"depth", RenderMode::Depth, "diffuse 0.2 0.6 0.9", "", "", 1},
         {"effects", RenderMode::Whitted, "diffuse 0.3 0.3 0.3 reflect 0.6 0.6 0.6 gloss 200", "aperture 0.05",
          "radius 0.4", 4},
+        {"path", RenderMode::Path, "diffuse 0.2 0.6 0.9 specular 0.3 0.3 0.3 shine 30", "", "", 4},
+        {"path-glass", RenderMode::Path, "diffuse 0 0 0 transparent 0.9 0.9 0.9 ior 1.5", "", "", 4},
     };
     for (const Variant& v : variants) {
         Image images[2] = {Image(96, 72), Image(96, 72)};
