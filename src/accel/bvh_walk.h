@@ -82,7 +82,10 @@ WHITTED_BVH_INLINE void walk_nearest(const Bvh& bvh, const Ray& ray, float t_min
 
 // Any-hit walk: every leaf whose box the ray enters within (t_min, t_max) is handed to
 // leaf(first, end), in no particular order, until it returns false. Returns false if stopped.
-template <class Leaf>
+// kNearFirst: of two or more children hit, the nearest box is entered first (a mesh's triangles:
+// a shadow ray from a surface meets the nearby surface it is blocked by sooner; the order of the
+// leaves is still unspecified).
+template <bool kNearFirst = false, class Leaf>
 WHITTED_BVH_INLINE bool walk_any(const Bvh& bvh, const Ray& ray, float t_min, float t_max, Leaf&& leaf) {
     if (bvh.nodes.empty()) return true;
     const BoxRay box_ray(ray);
@@ -97,6 +100,20 @@ WHITTED_BVH_INLINE bool walk_any(const Bvh& bvh, const Ray& ray, float t_min, fl
             const Bvh4Node& n = nodes[ref];
             int mask = tester.test(n, t_min, t_max, tn);
             if (mask != 0) {
+                if constexpr (kNearFirst) {
+                    int i = lowest_bit(mask);
+                    mask &= mask - 1;
+                    // The nearest goes on; the others are pushed in the order found.
+                    while (mask != 0) {
+                        const int j = lowest_bit(mask);
+                        mask &= mask - 1;
+                        const bool nearer = tn[j] < tn[i];
+                        stack[top++] = n.child[nearer ? i : j];
+                        if (nearer) i = j;
+                    }
+                    ref = n.child[i];
+                    continue;
+                }
                 // Any order will do: go into the first, push the others.
                 ref = n.child[lowest_bit(mask)];
                 mask &= mask - 1;

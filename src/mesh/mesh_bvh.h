@@ -35,7 +35,7 @@ bool mesh_for_each_crossing(const TriangleMesh& mesh, const Ray& ray, float t_mi
     const WatertightRay wr(ray);
     const TriangleIndices* tris = mesh.triangles.data();
     const glm::vec3* p = mesh.positions.data();
-    return bvh_detail::walk_any(mesh.bvh, ray, t_min, t_max, [&](std::uint32_t first, std::uint32_t end) {
+    return bvh_detail::walk_any<true>(mesh.bvh, ray, t_min, t_max, [&](std::uint32_t first, std::uint32_t end) {
         for (std::uint32_t i = first; i < end; ++i) {
             TriangleHit h;
             const TriangleIndices& c = tris[i];

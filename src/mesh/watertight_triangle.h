@@ -16,13 +16,14 @@
 
 namespace whitted {
 
-// The per-ray part: the axis the ray runs most along (kz), the two others, and the shear.
+// The per-ray part: the axis the ray runs most along (kz), the two others, the shear, and the
+// origin's coordinates along kx, ky, kz.
 struct WatertightRay {
-    glm::vec3 origin;
     int kx, ky, kz;
     float sx, sy, sz;
+    float ox, oy, oz;
 
-    explicit WatertightRay(const Ray& r) : origin(r.origin) {
+    explicit WatertightRay(const Ray& r) {
         const glm::vec3 a = glm::abs(r.direction);
         kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
         kx = kz == 2 ? 0 : kz + 1;
@@ -31,6 +32,9 @@ struct WatertightRay {
         sx = r.direction[kx] / r.direction[kz];
         sy = r.direction[ky] / r.direction[kz];
         sz = 1.0f / r.direction[kz];
+        ox = r.origin[kx];
+        oy = r.origin[ky];
+        oz = r.origin[kz];
     }
 };
 
@@ -42,10 +46,16 @@ struct TriangleHit {
 // Whether the ray meets triangle (p0, p1, p2), from either side, at t in (t_min, t_max).
 inline bool intersect_triangle(const WatertightRay& r, const glm::vec3& p0, const glm::vec3& p1,
                                const glm::vec3& p2, float t_min, float t_max, TriangleHit& hit) {
-    const glm::vec3 a = p0 - r.origin, b = p1 - r.origin, c = p2 - r.origin;
-    const float ax = a[r.kx] - r.sx * a[r.kz], ay = a[r.ky] - r.sy * a[r.kz];
-    const float bx = b[r.kx] - r.sx * b[r.kz], by = b[r.ky] - r.sy * b[r.kz];
-    const float cx = c[r.kx] - r.sx * c[r.kz], cy = c[r.ky] - r.sy * c[r.kz];
+    // Only the coordinates used, read straight from the corners by axis (the same values as
+    // subtracting whole vectors and picking components, without building them: the corners of a
+    // glm::vec3 are three adjacent floats).
+    const float* q0 = &p0.x;
+    const float* q1 = &p1.x;
+    const float* q2 = &p2.x;
+    const float a_z = q0[r.kz] - r.oz, b_z = q1[r.kz] - r.oz, c_z = q2[r.kz] - r.oz;
+    const float ax = (q0[r.kx] - r.ox) - r.sx * a_z, ay = (q0[r.ky] - r.oy) - r.sy * a_z;
+    const float bx = (q1[r.kx] - r.ox) - r.sx * b_z, by = (q1[r.ky] - r.oy) - r.sy * b_z;
+    const float cx = (q2[r.kx] - r.ox) - r.sx * c_z, cy = (q2[r.ky] - r.oy) - r.sy * c_z;
     // Edge functions: e0 of edge p1p2 (the weight of p0), e1 of p2p0, e2 of p0p1.
     float e0 = cx * by - cy * bx;
     float e1 = ax * cy - ay * cx;
@@ -58,7 +68,7 @@ inline bool intersect_triangle(const WatertightRay& r, const glm::vec3& p0, cons
     if ((e0 < 0.0f || e1 < 0.0f || e2 < 0.0f) && (e0 > 0.0f || e1 > 0.0f || e2 > 0.0f)) return false;
     const float det = e0 + e1 + e2;
     if (det == 0.0f) return false;  // seen edge-on (or degenerate)
-    const float az = r.sz * a[r.kz], bz = r.sz * b[r.kz], cz = r.sz * c[r.kz];
+    const float az = r.sz * a_z, bz = r.sz * b_z, cz = r.sz * c_z;
     const float inv_det = 1.0f / det;
     const float t = (e0 * az + e1 * bz + e2 * cz) * inv_det;
     if (!(t > t_min && t < t_max)) return false;
