@@ -11,6 +11,7 @@
 #include "accel/instance_geometry.h"
 #include "integrator/path_integrator.h"
 #include "integrator/path_lights.h"
+#include "integrator/path_test_support.h"
 #include "mesh/uv_sphere.h"
 #include "render/renderer.h"
 #include "sampler/warp.h"
@@ -19,24 +20,9 @@
 namespace whitted {
 namespace {
 
-struct Stats {
-    double mean = 0, se = 0;  // the mean and its standard error
-};
-
-Stats stats_of(const std::vector<double>& v) {
-    double s = 0, s2 = 0;
-    for (double x : v) s += x, s2 += x * x;
-    const double n = double(v.size()), m = s / n;
-    return {m, std::sqrt(std::max(0.0, s2 / n - m * m) / (n - 1))};
-}
-
-std::vector<double> samples_of(const PathIntegrator& path, const Ray& ray, int n, std::uint32_t pixel = 0) {
-    const Sampler sampler(1, n);
-    RayCounts counts;
-    std::vector<double> v;
-    for (int i = 0; i < n; ++i) v.push_back(path.radiance(ray, {pixel, 0, std::uint32_t(i)}, sampler, counts).x);
-    return v;
-}
+using test::samples_of;
+using test::Stats;
+using test::stats_of;
 
 // The unit square of the plane y = 0, two triangles.
 TriangleMesh unit_quad() {
@@ -109,24 +95,7 @@ TEST(PathMeshLight, FurnaceInsideAClosedMeshSeesEmitOverOneMinusAlbedo) {
     flat.materials = {m};
     flat.instances.push_back(mesh_instance(test::translate_scale({0.3f, -0.2f, 0.1f}, {20.0f, 9.0f, 14.0f}), 0, 0));
     flat.meshes.push_back(flat_sphere());
-    const Scene scene = accelerate(flat);
-    RenderJob job;
-    job.width = 12;
-    job.height = 10;
-    job.integrator = {RenderMode::Path, 64};
-    job.sampling.spp = 256;
-    const auto integrator = make_integrator(scene, scene.flat.camera, job.integrator);
-    Film film(job.width, job.height);
-    const RenderStats rs = render(*integrator, job, film);
-    EXPECT_EQ(rs.rays.rejected, 0u);
-    std::vector<double> pixels;
-    for (int y = 0; y < job.height; ++y)
-        for (int x = 0; x < job.width; ++x) pixels.push_back(film.at(x, y).value().x);
-    const Stats s = stats_of(pixels);
-    const double sd = s.se * std::sqrt(double(pixels.size()));
-    EXPECT_NEAR(s.mean, e / (1 - alb), 4 * s.se + 1e-3);
-    for (double p : pixels) EXPECT_NEAR(p, e / (1 - alb), 5 * sd + 1e-3);
-    EXPECT_GT(sd, 0.0);
+    test::expect_furnace_image(accelerate(flat), e / (1 - alb));
 }
 
 // The light's points are spread by world area: their mean is the area-weighted centroid of the
