@@ -285,6 +285,8 @@ RTCScene prototype(Proto proto, ShapeKind kind) {
             case ShapeKind::Cylinder: g = new_user_shape<ShapeKind::Cylinder>(); break;
             case ShapeKind::Cone: g = new_user_shape<ShapeKind::Cone>(); break;
             case ShapeKind::Sphere: g = new_user_shape<ShapeKind::Sphere>(); break;
+            case ShapeKind::Ellipsoid:  // not benchmarked against Embree
+            case ShapeKind::Mesh: return nullptr;  // meshes: bench/mesh_bench.cpp
         }
     }
     rtcCommitGeometry(g);

@@ -9,9 +9,10 @@ set -euo pipefail
 # libjpeg-dev: JPEG textures (Debian's stb aborts on an assertion with a corrupt Huffman table).
 # clang, libclang-rt-dev: the libFuzzer targets of fuzz/ (scripts/fuzz.sh); libFuzzer and clang's
 # sanitizer runtimes are in libclang-rt-dev, which clang only recommends.
+# libtinyobjloader-dev: reads the OBJ files of `object mesh` (scene-format.md §9.3).
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libcli11-dev libgtest-dev libgmock-dev
           libbenchmark-dev libfltk1.3-dev fluid libopenexr-dev openmpi-bin libopenmpi-dev
-          clang libclang-rt-dev zlib1g-dev libjpeg-dev)
+          clang libclang-rt-dev zlib1g-dev libjpeg-dev libtinyobjloader-dev)
 if [[ "${1:-}" == "--viewer-test" ]]; then packages+=(xvfb x11-apps imagemagick xdotool tesseract-ocr); fi
 
 missing=()

@@ -8,65 +8,54 @@
 #include <vector>
 
 #include "accel/bvh.h"
-#include "accel/bvh_box_test.h"
-#include "accel/bvh_ray.h"
+#include "accel/bvh_mesh_leaf.h"
+#include "accel/bvh_walk.h"
 
 namespace whitted {
+namespace bvh_detail {
+
+// Offers instance i's crossings within (t_min, t_max) to visit; false if it said stop.
+template <class Visit>
+WHITTED_BVH_INLINE bool visit_instance(const Instance& inst, std::uint32_t i, const std::vector<TriangleMesh>* meshes,
+                                       const Ray& ray, float t_min, float t_max, Visit& visit) {
+    if (inst.kind == ShapeKind::Mesh)
+        return mesh_for_each_crossing((*meshes)[inst.mesh], to_object_space(inst, ray), t_min, t_max,
+                                      [&](std::uint32_t) { return visit(i, 1); });
+    const auto s = intersect_instance(inst, ray);
+    if (s.count == 0) return true;
+    const int crossings = (s.t[0] > t_min && s.t[0] < t_max) + (s.t[1] > t_min && s.t[1] < t_max);
+    return crossings == 0 || visit(i, crossings);
+}
+
+}  // namespace bvh_detail
 
 // Calls visit(instance index, crossings) for every instance whose surface the ray crosses within
-// (t_min, t_max), crossings being 1 or 2 (a closed shape entered and left). visit returns false to
-// stop. Returns false if it was stopped, true if every crossing was visited.
+// (t_min, t_max), crossings being 1 or 2 (a closed shape entered and left); a mesh instance is
+// offered once per triangle crossed, with 1. visit returns false to stop. Returns false if it was
+// stopped, true if every crossing was visited. Mesh instances need `meshes`.
+template <class Visit>
+bool for_each_crossing(const Bvh& bvh, const std::vector<Instance>& instances, const std::vector<TriangleMesh>* meshes,
+                       const Ray& ray, float t_min, float t_max, Visit&& visit) {
+    const Instance* inst = instances.data();
+    return bvh_detail::walk_any(bvh, ray, t_min, t_max, [&](std::uint32_t first, std::uint32_t end) {
+        for (std::uint32_t i = first; i < end; ++i)
+            if (!bvh_detail::visit_instance(inst[i], i, meshes, ray, t_min, t_max, visit)) return false;
+        return true;
+    });
+}
+
 template <class Visit>
 bool for_each_crossing(const Bvh& bvh, const std::vector<Instance>& instances, const Ray& ray, float t_min,
                        float t_max, Visit&& visit) {
-    if (bvh.nodes.empty()) return true;
-    const bvh_detail::BoxRay box_ray(ray);
-    const bvh_detail::BoxTester tester(box_ray);
-    const Bvh4Node* nodes = bvh.nodes.data();
-    const Instance* inst = instances.data();
-
-    std::uint32_t stack[bvh_detail::kStackSize];
-    int top = 0;
-    std::uint32_t ref = 0;
-    for (;;) {
-        if (!Bvh4Node::is_leaf(ref)) {
-            float tn[4];
-            const Bvh4Node& n = nodes[ref];
-            int mask = tester.test(n, t_min, t_max, tn);
-            if (mask != 0) {
-                // Any order will do: go into the first, push the others.
-                ref = n.child[bvh_detail::lowest_bit(mask)];
-                mask &= mask - 1;
-                while (mask != 0) {
-                    stack[top++] = n.child[bvh_detail::lowest_bit(mask)];
-                    mask &= mask - 1;
-                }
-                continue;
-            }
-        } else {
-            const std::uint32_t first = Bvh4Node::leaf_first(ref), end = first + Bvh4Node::leaf_count(ref);
-            for (std::uint32_t i = first; i < end; ++i) {
-                const auto s = bvh_detail::intersect_instance(inst[i], ray);
-                if (s.count == 0) continue;
-                const int crossings = (s.t[0] > t_min && s.t[0] < t_max) + (s.t[1] > t_min && s.t[1] < t_max);
-                if (crossings != 0 && !visit(i, crossings)) return false;
-            }
-        }
-        if (top == 0) return true;
-        ref = stack[--top];
-    }
+    return for_each_crossing(bvh, instances, nullptr, ray, t_min, t_max, visit);
 }
 
 // The same, testing every instance (the reference for the tests).
 template <class Visit>
 bool for_each_crossing_brute_force(const std::vector<Instance>& instances, const Ray& ray, float t_min, float t_max,
-                                   Visit&& visit) {
-    for (std::uint32_t i = 0; i < instances.size(); ++i) {
-        const auto s = bvh_detail::intersect_instance(instances[i], ray);
-        if (s.count == 0) continue;
-        const int crossings = (s.t[0] > t_min && s.t[0] < t_max) + (s.t[1] > t_min && s.t[1] < t_max);
-        if (crossings != 0 && !visit(i, crossings)) return false;
-    }
+                                   Visit&& visit, const std::vector<TriangleMesh>* meshes = nullptr) {
+    for (std::uint32_t i = 0; i < instances.size(); ++i)
+        if (!bvh_detail::visit_instance(instances[i], i, meshes, ray, t_min, t_max, visit)) return false;
     return true;
 }
 

@@ -10,7 +10,7 @@
 #define WHITTED_BVH_SSE 1
 #endif
 
-#include "accel/bvh.h"
+#include "accel/bvh_node.h"
 #include "accel/bvh_ray.h"
 
 namespace whitted::bvh_detail {

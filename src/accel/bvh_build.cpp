@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <functional>
 #include <stdexcept>
 
 #include "accel/bvh.h"
@@ -18,7 +19,7 @@ namespace whitted {
 namespace {
 
 constexpr int kBins = 16;
-constexpr std::uint32_t kMaxLeaf = 8;  // <= Bvh4Node::kMaxLeafSize
+constexpr std::uint32_t kMaxInstanceLeaf = 8;  // <= Bvh4Node::kMaxLeafSize
 // SAH cost of a traversal step relative to one instance test (an object-space transform plus a
 // quadric). A 4-wide box test is cheaper than that while the tree sits in the caches; once the
 // node array is far larger than them (hundreds of thousands of instances) every step is mostly
@@ -90,14 +91,9 @@ void bounds_of(const std::vector<PrimRef>& refs, std::uint32_t begin, std::uint3
 
 // World bounds padded by a few float ulps of their magnitude, so that a hit computed in object
 // space (with its own rounding) is never outside the box that leads to it.
-Bounds padded_world_bounds(const Instance& inst) {
-    Bounds b = world_bounds(inst);
-    const glm::vec3 mag = glm::max(glm::abs(b.lo), glm::abs(b.hi));
-    const float m = std::max(std::max(mag.x, mag.y), mag.z);
-    const glm::vec3 pad = glm::vec3(1e-5f * m + 1e-30f);
-    b.lo -= pad;
-    b.hi += pad;
-    return b;
+Bounds padded_world_bounds(const Instance& inst, const std::vector<TriangleMesh>* meshes) {
+    const Bounds b = inst.kind == ShapeKind::Mesh ? mesh_world_bounds((*meshes)[inst.mesh], inst) : world_bounds(inst);
+    return b.padded(1e-5f);
 }
 
 // The threads a build uses: as asked (0 = all hardware threads), at most 8.
@@ -119,8 +115,9 @@ void parallel_chunks(std::size_t n, int threads, Body body) {
 // Builds the subtree of `root` (whose node nodes[root.node] exists) into `nodes`. Tasks of at most
 // `defer_below` references are not built but appended to *deferred (when given), for other threads.
 void build_subtree(std::vector<PrimRef>& refs, const Task& root, std::vector<BinNode>& nodes,
-                   std::uint32_t defer_below, std::vector<Task>* deferred) {
-    const float traversal_cost = refs.size() > kLargeScene ? kTraversalCostLarge : kTraversalCostCached;
+                   std::uint32_t defer_below, std::vector<Task>* deferred, const BvhBuildCosts& costs) {
+    const float traversal_cost = costs.traversal_cost;
+    const std::uint32_t max_leaf = costs.max_leaf;
     std::vector<Task> stack{root};
     while (!stack.empty()) {
         const Task task = stack.back();
@@ -156,7 +153,7 @@ void build_subtree(std::vector<PrimRef>& refs, const Task& root, std::vector<Bin
         bool known = false;
         if (!(ext[axis] > 0.0f) || task.depth >= kSahDepthLimit) {
             // No plane separates the centres (or the tree is already deep): split at the median.
-            if (count <= kMaxLeaf) { make_leaf(); continue; }
+            if (count <= max_leaf) { make_leaf(); continue; }
             mid = median_split();
         } else {
             struct Bin { Box box, centres; std::uint32_t count = 0; };
@@ -198,8 +195,8 @@ void build_subtree(std::vector<PrimRef>& refs, const Task& root, std::vector<Bin
             const float leaf_cost = float(count);
             const float area = box.area();
             const float split_cost = traversal_cost + (area > 0.0f ? best / area : leaf_cost);
-            if (best_split < 0 || (split_cost >= leaf_cost && count <= kMaxLeaf)) {
-                if (count <= kMaxLeaf) { make_leaf(); continue; }
+            if (best_split < 0 || (split_cost >= leaf_cost && count <= max_leaf)) {
+                if (count <= max_leaf) { make_leaf(); continue; }
                 mid = median_split();
             } else {
                 auto it = std::partition(refs.begin() + task.begin, refs.begin() + task.end,
@@ -228,19 +225,19 @@ void build_subtree(std::vector<PrimRef>& refs, const Task& root, std::vector<Bin
 // The binary tree over all refs. The top is built by this thread; the subtrees below it are
 // built in parallel into separate arrays, then appended in a fixed order (so the result does not
 // depend on the thread count or timing).
-std::vector<BinNode> build_binary(std::vector<PrimRef>& refs, int threads) {
+std::vector<BinNode> build_binary(std::vector<PrimRef>& refs, int threads, const BvhBuildCosts& costs) {
     const std::uint32_t n = static_cast<std::uint32_t>(refs.size());
     std::vector<BinNode> nodes;
     nodes.reserve(2 * std::size_t(n));
     nodes.emplace_back();
     const Task root{0, n, 0, 0, {}, {}, false};
     if (threads == 1 || n < kParallelBuildMin) {
-        build_subtree(refs, root, nodes, 0, nullptr);
+        build_subtree(refs, root, nodes, 0, nullptr, costs);
         return nodes;
     }
     // Subtrees of at most n/16 refs: enough pieces to balance two to eight threads.
     std::vector<Task> deferred;
-    build_subtree(refs, root, nodes, n / 16, &deferred);
+    build_subtree(refs, root, nodes, n / 16, &deferred, costs);
     std::vector<std::vector<BinNode>> parts(deferred.size());
     parallel_for(deferred.size(), threads, [&](std::size_t i, int) {
         std::vector<BinNode>& part = parts[i];
@@ -248,7 +245,7 @@ std::vector<BinNode> build_binary(std::vector<PrimRef>& refs, int threads) {
         part.emplace_back();
         Task t = deferred[i];
         t.node = 0;
-        build_subtree(refs, t, part, 0, nullptr);
+        build_subtree(refs, t, part, 0, nullptr, costs);
     });
     // Part node 0 is the deferred task's own node; part node k > 0 goes to base + k - 1.
     for (std::size_t i = 0; i < parts.size(); ++i) {
@@ -320,34 +317,42 @@ std::uint32_t collapse(const std::vector<BinNode>& bin, std::uint32_t root, std:
 
 }  // namespace
 
-Bvh build_bvh(std::vector<Instance>& instances, int threads_asked) {
+Bvh build_bvh_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of, const BvhBuildCosts& costs,
+                         int threads_asked, std::vector<std::uint32_t>& order) {
     const int threads = build_threads(threads_asked);
     Bvh bvh;
-    const std::size_t n = instances.size();
+    order.clear();
     if (n == 0) return bvh;
-    if (n >= Bvh4Node::kMaxInstances) throw std::length_error("too many instances for the BVH");
+    if (n >= Bvh4Node::kMaxInstances) throw std::length_error("too many primitives for the BVH");
 
     std::vector<PrimRef> refs(n);
     parallel_chunks(n, threads, [&](std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t i = begin; i < end; ++i) {
-            const Bounds b = padded_world_bounds(instances[i]);
+            const Bounds b = box_of(i);
             float index;
             std::memcpy(&index, &i, 4);
             refs[i] = {V4{b.lo.x, b.lo.y, b.lo.z, index}, V4{b.hi.x, b.hi.y, b.hi.z, 0.0f}};
         }
     });
-    std::vector<std::uint32_t> source(n);  // leaf order: the instance that goes to place i
-    {
-        std::vector<BinNode> bin = build_binary(refs, threads);
-        for (std::uint32_t i = 0; i < n; ++i) source[i] = refs[i].index();
-        std::vector<PrimRef>().swap(refs);  // lower the peak: the refs are done with
-        bvh.box = bin[0].box;
-        // The binary tree has ~2n/L nodes for leaves of L; a wide node replaces three inner
-        // ones, so ~2n/(3L) wide nodes. Untouched reserved pages cost no memory.
-        bvh.nodes.reserve(bin.size() / 3 + 1);
-        collapse(bin, 0, bvh.nodes);
-    }
+    order.resize(n);  // leaf order: the primitive that goes to place i
+    std::vector<BinNode> bin = build_binary(refs, threads, costs);
+    for (std::uint32_t i = 0; i < n; ++i) order[i] = refs[i].index();
+    std::vector<PrimRef>().swap(refs);  // lower the peak: the refs are done with
+    bvh.box = bin[0].box;
+    // The binary tree has ~2n/L nodes for leaves of L; a wide node replaces three inner
+    // ones, so ~2n/(3L) wide nodes. Untouched reserved pages cost no memory.
+    bvh.nodes.reserve(bin.size() / 3 + 1);
+    collapse(bin, 0, bvh.nodes);
+    return bvh;
+}
 
+Bvh build_bvh(std::vector<Instance>& instances, int threads, const std::vector<TriangleMesh>* meshes) {
+    const float traversal_cost = instances.size() > kLargeScene ? kTraversalCostLarge : kTraversalCostCached;
+    std::vector<std::uint32_t> source;
+    Bvh bvh = build_bvh_over_boxes(
+        instances.size(), [&](std::uint32_t i) { return padded_world_bounds(instances[i], meshes); },
+        {traversal_cost, kMaxInstanceLeaf}, threads, source);
+    const std::size_t n = instances.size();
     // Reorder the instances to leaf order in place, following the permutation's cycles.
     for (std::uint32_t i = 0; i < n; ++i) {
         if (source[i] == i) continue;

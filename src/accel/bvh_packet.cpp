@@ -19,6 +19,7 @@
 #endif
 
 #include "accel/bvh_packet_shapes.h"
+#include "accel/bvh_mesh_leaf.h"
 #include "accel/bvh_ray.h"
 
 namespace whitted {
@@ -203,6 +204,7 @@ struct Nearest {
     std::uint32_t index[kPacketSize];
     ShapePart part[kPacketSize];
     bool found[kPacketSize];
+    bvh_detail::TriangleState tri[kPacketSize];
 };
 
 // bvh_detail::offer_nearest for the lanes of group g set in `lanes`, given their intervals
@@ -237,10 +239,19 @@ inline void offer4(const packet_shapes::Span4& s, std::uint32_t index, int g, un
 }
 
 // Offers instance `index` to the lanes in `mask`: four lanes at a time for the shapes that
-// bvh_packet_shapes.h has, one lane at a time (bvh_ray.h) for the cone.
+// bvh_packet_shapes.h has, one lane at a time (bvh_ray.h) for the cone, and for a mesh one lane
+// at a time down its own BVH (bvh_mesh_leaf.h), exactly as the single-ray query does.
 inline void offer_instance(const Instance& inst, std::uint32_t index, const Ray (&rays)[kPacketSize],
                            const PacketRays& r, unsigned mask, float t_min, float t_max, __m128 tmin, __m128 tmax,
-                           Nearest& nearest) {
+                           const TriangleMesh* meshes, Nearest& nearest) {
+    if (inst.kind == ShapeKind::Mesh) {
+        for (unsigned m = mask; m != 0; m &= m - 1) {
+            const int l = lowest_bit(m);
+            bvh_detail::offer_mesh_nearest(meshes[inst.mesh], inst, rays[l], index, t_min, t_max, nearest.best[l],
+                                           nearest.index[l], nearest.part[l], nearest.found[l], nearest.tri[l]);
+        }
+        return;
+    }
     if (inst.kind == ShapeKind::Cone) {
         for (unsigned m = mask; m != 0; m &= m - 1) {
             const int l = lowest_bit(m);
@@ -259,7 +270,7 @@ inline void offer_instance(const Instance& inst, std::uint32_t index, const Ray 
             case ShapeKind::Cube: offer4(packet_shapes::cube4(o, d), index, g, lanes, tmin, tmax, nearest); break;
             case ShapeKind::Cylinder: offer4(packet_shapes::cylinder4(o, d), index, g, lanes, tmin, tmax, nearest); break;
             case ShapeKind::Ellipsoid: offer4(packet_shapes::ellipsoid4(o, d, int(lanes)), index, g, lanes, tmin, tmax, nearest); break;
-            case ShapeKind::Cone: break;
+            case ShapeKind::Cone: case ShapeKind::Mesh: break;
         }
     }
 }
@@ -273,8 +284,9 @@ struct alignas(16) Entry {
 };
 
 template <bool kSameSigns, bool kCommonOrigin>
-unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const Ray (&rays)[kPacketSize],
-                  const PacketRays& r, unsigned active, float t_min, float t_max, Hit (&hits)[kPacketSize]) {
+unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const TriangleMesh* meshes,
+                  const Ray (&rays)[kPacketSize], const PacketRays& r, unsigned active, float t_min, float t_max,
+                  Hit (&hits)[kPacketSize]) {
     const Bvh4Node* nodes = bvh.nodes.data();
     const Instance* inst = instances.data();
     const __m128 tmin = _mm_set1_ps(t_min);
@@ -368,7 +380,7 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
         } else {
             const std::uint32_t first = Bvh4Node::leaf_first(ref), end = first + Bvh4Node::leaf_count(ref);
             for (std::uint32_t i = first; i < end; ++i)
-                offer_instance(inst[i], i, rays, r, mask, t_min, t_max, tmin, tmax, nearest);
+                offer_instance(inst[i], i, rays, r, mask, t_min, t_max, tmin, tmax, meshes, nearest);
         }
         // Pop, dropping the lanes whose nearest hit is now closer than their entry into the box.
         for (;;) {
@@ -376,7 +388,7 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
                 unsigned result = 0;
                 for (int l = 0; l < kPacketSize; ++l)
                     if (nearest.found[l]) {
-                        hits[l] = {best[l], nearest.index[l], nearest.part[l]};
+                        hits[l] = bvh_detail::make_hit(inst, best[l], nearest.index[l], nearest.part[l], nearest.tri[l]);
                         result |= 1u << l;
                     }
                 return result;
@@ -400,15 +412,16 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
 
 unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& instances,
                                   const Ray (&rays)[kPacketSize], unsigned active, float t_min, float t_max,
-                                  Hit (&hits)[kPacketSize]) {
+                                  Hit (&hits)[kPacketSize], const std::vector<TriangleMesh>* meshes) {
     active &= ~0u >> (32 - kPacketSize);
     if (bvh.nodes.empty() || active == 0) return 0;
     const PacketRays r(rays, active);
+    const TriangleMesh* m = meshes ? meshes->data() : nullptr;
     if (r.common_origin)
-        return r.same_signs ? traverse<true, true>(bvh, instances, rays, r, active, t_min, t_max, hits)
-                            : traverse<false, true>(bvh, instances, rays, r, active, t_min, t_max, hits);
-    return r.same_signs ? traverse<true, false>(bvh, instances, rays, r, active, t_min, t_max, hits)
-                        : traverse<false, false>(bvh, instances, rays, r, active, t_min, t_max, hits);
+        return r.same_signs ? traverse<true, true>(bvh, instances, m, rays, r, active, t_min, t_max, hits)
+                            : traverse<false, true>(bvh, instances, m, rays, r, active, t_min, t_max, hits);
+    return r.same_signs ? traverse<true, false>(bvh, instances, m, rays, r, active, t_min, t_max, hits)
+                        : traverse<false, false>(bvh, instances, m, rays, r, active, t_min, t_max, hits);
 }
 
 #else
@@ -416,10 +429,11 @@ unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& i
 // Without SSE: one ray at a time, which is exactly the single-ray query.
 unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& instances,
                                   const Ray (&rays)[kPacketSize], unsigned active, float t_min, float t_max,
-                                  Hit (&hits)[kPacketSize]) {
+                                  Hit (&hits)[kPacketSize], const std::vector<TriangleMesh>* meshes) {
     unsigned result = 0;
     for (int l = 0; l < kPacketSize; ++l)
-        if (((active >> l) & 1) && intersect_nearest(bvh, instances, rays[l], t_min, t_max, hits[l])) result |= 1u << l;
+        if (((active >> l) & 1) && intersect_nearest(bvh, instances, rays[l], t_min, t_max, hits[l], meshes))
+            result |= 1u << l;
     return result;
 }
 

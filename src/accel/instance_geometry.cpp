@@ -28,4 +28,16 @@ glm::mat4 object_to_world(const Instance& inst) {
 
 Bounds world_bounds(const Instance& inst) { return unit_shape_world_bounds(inst.kind, object_to_world(inst)); }
 
+Bounds mesh_world_bounds(const TriangleMesh& mesh, const Instance& inst) {
+    Bounds b;
+    if (mesh.box.empty()) return b;
+    const glm::mat4 m = object_to_world(inst);
+    for (int k = 0; k < 8; ++k) {
+        const glm::vec3 corner((k & 1) ? mesh.box.hi.x : mesh.box.lo.x, (k & 2) ? mesh.box.hi.y : mesh.box.lo.y,
+                               (k & 4) ? mesh.box.hi.z : mesh.box.lo.z);
+        b.grow(glm::vec3(m * glm::vec4(corner, 1.0f)));
+    }
+    return b;
+}
+
 }  // namespace whitted

@@ -26,6 +26,9 @@ inline glm::vec3 normal_to_world(const Instance& inst, const glm::vec3& n) {
 // The object→world matrix M, recovered from the stored inverse.
 glm::mat4 object_to_world(const Instance& inst);
 
+// World bounds of a unit-shape instance.
 Bounds world_bounds(const Instance& inst);
+// World bounds of a mesh instance: the box of its object-space box's corners under the matrix.
+Bounds mesh_world_bounds(const TriangleMesh& mesh, const Instance& inst);
 
 }  // namespace whitted

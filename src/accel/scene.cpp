@@ -1,11 +1,16 @@
 #include "accel/scene.h"
 
+#include "mesh/mesh_bvh.h"
+
 namespace whitted {
 
 Scene accelerate(FlatScene flat, int threads) {
     Scene scene;
     scene.flat = std::move(flat);
-    scene.bvh = build_bvh(scene.flat.instances, threads);
+    // The bottom level first: a mesh instance's world bounds come from its mesh's box.
+    for (TriangleMesh& mesh : scene.flat.meshes)
+        if (mesh.bvh.nodes.empty()) build_mesh_bvh(mesh, threads);
+    scene.bvh = build_bvh(scene.flat.instances, threads, &scene.flat.meshes);
     return scene;
 }
 

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "camera/camera.h"
+#include "mesh/triangle_mesh.h"
 #include "scene/scene_description.h"
 
 namespace whitted {
@@ -18,6 +19,7 @@ struct Instance {
     glm::vec4 world_to_object[3];
     ShapeKind kind;
     std::uint32_t material;
+    std::uint32_t mesh = 0;  // kind == Mesh: index into FlatScene::meshes
 };
 
 struct Material {
@@ -60,6 +62,7 @@ struct FlatScene {
     std::vector<Material> materials;
     std::vector<Light> lights;
     std::vector<TextureImage> textures;
+    std::vector<TriangleMesh> meshes;  // one per OBJ file, however many instances draw it
     Camera camera;  // the file's camera: what a render uses unless it is given another
     glm::vec3 background{0.0f};
     glm::vec3 ambient_intensity{1.0f};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "accel/instance_geometry.h"
 #include "integrator/bsdf.h"
 #include "integrator/light_sample.h"
 #include "integrator/surface.h"
@@ -57,7 +58,12 @@ glm::vec3 PathIntegrator::next_event(const Vertex& v, int bounce, const SampleKe
     const glm::vec3 x = v.s.point;
 
     if (pick.instance >= 0) {
-        const AreaLightSample ls = lights_.sample_area(std::uint32_t(pick.instance), u);
+        const std::uint32_t light = std::uint32_t(pick.instance);
+        // An emissive mesh draws its triangle from a dimension of its own (the unit shapes need two).
+        const float u_triangle = scene_.flat.instances[light].kind == ShapeKind::Mesh
+                                     ? sampler.get2d(key, dimension::path(bounce, dimension::kPathLightTriangle)).x
+                                     : 0.0f;
+        const AreaLightSample ls = lights_.sample_area(light, u, u_triangle);
         glm::vec3 to = ls.point - x;
         const float d2 = glm::dot(to, to), d = std::sqrt(d2);
         if (!(d > 0.0f)) return glm::vec3(0.0f);
@@ -117,7 +123,10 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
                 // The same light could have been found by next-event estimation: weigh the two.
                 const glm::vec3 to = s.point - from;
                 const float d2 = glm::dot(to, to);
-                const float cos_light = std::abs(glm::dot(s.normal, wo));
+                // The light's density is per unit area of its true surface: the geometric normal
+                // (a mesh's shading normal, interpolated, is not that surface's).
+                const glm::vec3 n_light = normal_to_world(scene_.flat.instances[hit.instance], s.object_normal);
+                const float cos_light = std::abs(glm::dot(n_light, wo));
                 const float pdf_light = lights_.choice_probability(hit.instance) *
                                         lights_.pdf_area(hit.instance, s.object_normal) * d2 / std::max(cos_light, 1e-12f);
                 radiance += beta * m.emit * power_heuristic(bsdf_pdf, pdf_light);

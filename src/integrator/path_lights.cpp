@@ -43,10 +43,21 @@ float PathLights::world_area(const Instance& inst) {
 PathLights::PathLights(const Scene& scene) : scene_(scene) {
     const FlatScene& flat = scene.flat;
     std::vector<float> power;
+    mesh_sampler_of_.assign(flat.instances.size(), -1);
     for (std::uint32_t i = 0; i < flat.instances.size(); ++i) {
         const glm::vec3& e = scene.material(i).emit;
         if (std::max(e.x, std::max(e.y, e.z)) <= 0.0f) continue;
-        if (unit_shape_area(flat.instances[i].kind) <= 0.0f) continue;  // no shape kind without a sampler
+        const Instance& inst = flat.instances[i];
+        if (inst.kind == ShapeKind::Mesh) {
+            MeshAreaSampler sampler(flat.meshes[inst.mesh], object_to_world(inst));
+            if (!(sampler.total_area() > 0.0f)) continue;
+            mesh_sampler_of_[i] = std::int32_t(mesh_samplers_.size());
+            lights_.push_back({std::int32_t(i), -1});
+            power.push_back(std::max(1e-12f, luminance(e) * sampler.total_area() * kPi));
+            mesh_samplers_.push_back(std::move(sampler));
+            continue;
+        }
+        if (unit_shape_area(inst.kind) <= 0.0f) continue;  // no unit shape without a sampler
         lights_.push_back({std::int32_t(i), -1});
         power.push_back(std::max(1e-12f, luminance(e) * world_area(flat.instances[i]) * kPi));
     }
@@ -80,7 +91,11 @@ const PathLight& PathLights::choose(float u, float& prob) const {
 
 float PathLights::choice_probability(std::uint32_t instance) const { return instance_choice_[instance]; }
 
-AreaLightSample PathLights::sample_area(std::uint32_t instance, glm::vec2 u) const {
+AreaLightSample PathLights::sample_area(std::uint32_t instance, glm::vec2 u, float u_triangle) const {
+    if (const std::int32_t m = mesh_sampler_of_[instance]; m >= 0) {
+        const AreaSample s = mesh_samplers_[std::size_t(m)].sample({u_triangle, u.x, u.y});
+        return {s.point, s.normal, s.pdf_area};
+    }
     const Instance& inst = scene_.flat.instances[instance];
     const ShapeSample s = sample_unit_shape(inst.kind, u);
     const glm::vec3 n_object = unit_shape_normal(inst.kind, s.part, s.p);
@@ -89,6 +104,8 @@ AreaLightSample PathLights::sample_area(std::uint32_t instance, glm::vec2 u) con
 }
 
 float PathLights::pdf_area(std::uint32_t instance, const glm::vec3& n_object) const {
+    if (const std::int32_t m = mesh_sampler_of_[instance]; m >= 0)
+        return 1.0f / mesh_samplers_[std::size_t(m)].total_area();
     const Instance& inst = scene_.flat.instances[instance];
     return 1.0f / (unit_shape_area(inst.kind) * area_scale(inst, unit_shape_area_normal(inst.kind, n_object)));
 }

@@ -11,9 +11,16 @@ Surface surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
     const glm::vec3 p = object_ray.at(hit.t);
     Surface s;
     s.point = ray.at(hit.t);
-    s.object_normal = unit_shape_normal(inst.kind, hit.part, p);
-    s.normal = normal_to_world(inst, s.object_normal);
-    s.uv = unit_shape_uv(inst.kind, hit.part, p);
+    if (inst.kind == ShapeKind::Mesh) {
+        const TriangleMesh& mesh = scene.flat.meshes[inst.mesh];
+        s.object_normal = glm::normalize(triangle_geometric_normal(mesh, hit.triangle));
+        s.normal = normal_to_world(inst, mesh_shading_normal(mesh, hit.triangle, hit.u, hit.v));
+        s.uv = mesh_uv(mesh, hit.triangle, hit.u, hit.v);
+    } else {
+        s.object_normal = unit_shape_normal(inst.kind, hit.part, p);
+        s.normal = normal_to_world(inst, s.object_normal);
+        s.uv = unit_shape_uv(inst.kind, hit.part, p);
+    }
     s.material = &scene.flat.materials[inst.material];
     s.diffuse = s.material->diffuse;
     s.ambient = s.material->ambient;

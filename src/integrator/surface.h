@@ -9,8 +9,8 @@ namespace whitted {
 struct Surface {
     glm::vec3 point;      // world space
     glm::vec3 normal;     // world space, unit, outward
-    glm::vec3 object_normal;  // the unit shape's outward normal there, in object space
-    glm::vec2 uv;         // texture coordinates of the unit shape (spec §8)
+    glm::vec3 object_normal;  // the outward normal there in object space (a mesh: the triangle's geometric one)
+    glm::vec2 uv;         // texture coordinates (spec §8; a mesh's vt, §9.3)
     const Material* material;
     glm::vec3 diffuse;    // material diffuse × texel (or blended with it, §9.4)
     glm::vec3 ambient;    // material ambient × texel (as is under blend)

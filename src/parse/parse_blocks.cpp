@@ -299,6 +299,8 @@ void Parser::parse_object(const Token& opener, TransDesc& trans) {
     else if (t == "mesh" && brown())
         return skip_object(opener, type, "object 'mesh' skipped: its 'meshfile' is in the Brown/Tufts "
                                           "course's own mesh format, which whitted does not read");
+    else if (t == "mesh")
+        obj.kind = ShapeKind::Mesh;
     else {
         if (!options_.lenient) {
             error(type, "unknown object type " + describe(type) + did_you_mean(t, kAllShapeWords) +
@@ -313,7 +315,19 @@ void Parser::parse_object(const Token& opener, TransDesc& trans) {
     }
     MaterialDesc& mat = obj.material;
     open_block();
-    const bool ok = read_block(opener, "object", [&](const Token& k) { parse_material(k, mat); });
+    const bool ok = read_block(opener, "object", [&](const Token& k) {
+        if (k.text != "file") return parse_material(k, mat);
+        // §9.3: the OBJ file of a mesh, looked up like a texture when the scene is loaded.
+        if (obj.kind != ShapeKind::Mesh)
+            fail(k, "'file' names the OBJ file of an 'object mesh'; a " + std::string(shape_name(obj.kind)) +
+                        " has no file");
+        obj.mesh_loc = loc(k);
+        obj.mesh_file = std::string(word(k, "a mesh file name (an OBJ file)").text);
+    });
+    if (ok && obj.kind == ShapeKind::Mesh && obj.mesh_file.empty()) {
+        error(opener, "'object mesh' needs its OBJ file: 'file PATH' in the object block (scene-format.md §9.3)");
+        return;
+    }
     if (ok) trans.objects.push_back(std::move(obj));
 }
 

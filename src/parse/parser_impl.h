@@ -44,10 +44,10 @@ constexpr const char* kSubgraphKeywords = "trans";
 constexpr const char* kTransKeywords =
     "translate, scale, rotate, matrixRC, matrixCR, velocity, angularrate, object, subgraph";
 constexpr const char* kObjectKeywords =
-    "ambient, diffuse, specular, reflect, transparent, emit, shine, ior, gloss, texture, alpha";
+    "ambient, diffuse, specular, reflect, transparent, emit, shine, ior, gloss, texture, alpha, file";
 constexpr const char* kBrownObjectKeywords =
     "ambient, diffuse, specular, reflect, transparent, emit, shine, ior, gloss, texture, alpha, blend";
-constexpr const char* kShapeNames = "cube, cylinder, cone, sphere, ellipsoid";
+constexpr const char* kShapeNames = "cube, cylinder, cone, sphere, ellipsoid, mesh";
 // Shapes of other labs whose geometry did not survive (§9.4): skipped with a warning.
 constexpr const char* kLostShapes = "cactus, cow";
 constexpr const char* kAllShapeWords = "cube, cylinder, cone, sphere, ellipsoid, cactus, cow, mesh";

@@ -7,6 +7,7 @@
 
 #include "flatten/flatten.h"
 #include "integrator/path_integrator.h"
+#include "mesh/mesh_loader.h"
 
 namespace whitted {
 namespace {
@@ -44,6 +45,9 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
                                              &result.texture_files);
     result.stats.texture_seconds = since(t);
     if (has_errors(result.diagnostics) || cancelled()) return result;
+    // Meshes (§9.3) are looked up where textures are.
+    if (!load_meshes(flat, parsed.scene.path, options.textures.search_dirs, result.diagnostics) || cancelled())
+        return result;
 
     std::vector<SourceLoc> sources;
     for (const ObjectDesc* o : flat.material_sources) sources.push_back(o->loc);

@@ -34,9 +34,9 @@ inline std::uint32_t light(int depth, std::uint32_t light) { return 16u + std::u
 inline std::uint32_t gloss_reflect(int depth) { return 16u + std::uint32_t(depth) * 0x10000u; }
 inline std::uint32_t gloss_refract(int depth) { return 16u + std::uint32_t(depth) * 0x10000u + 1u; }
 // The path tracer, at bounce `bounce`: which light and Russian roulette; the point on the light;
-// which BSDF lobe; the BSDF direction.
+// which BSDF lobe; the BSDF direction; which triangle of an emissive mesh (§9.3).
 inline std::uint32_t path(int bounce, std::uint32_t slot) { return 0x80000000u + std::uint32_t(bounce) * 8u + slot; }
-constexpr std::uint32_t kPathChoice = 0, kPathLightPoint = 1, kPathLobe = 2, kPathDirection = 3;
+constexpr std::uint32_t kPathChoice = 0, kPathLightPoint = 1, kPathLobe = 2, kPathDirection = 3, kPathLightTriangle = 4;
 }  // namespace dimension
 
 class Sampler {

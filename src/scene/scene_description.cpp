@@ -9,6 +9,7 @@ const char* shape_name(ShapeKind kind) {
         case ShapeKind::Cone: return "cone";
         case ShapeKind::Sphere: return "sphere";
         case ShapeKind::Ellipsoid: return "ellipsoid";
+        case ShapeKind::Mesh: return "mesh";
     }
     return "?";
 }

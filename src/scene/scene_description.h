@@ -14,8 +14,9 @@
 
 namespace whitted {
 
-// Ellipsoid: x² + 4y² + z² = 1 (scene-format.md §9.4), the only shape reaching outside the unit cube.
-enum class ShapeKind : unsigned char { Cube = 0, Cylinder = 1, Cone = 2, Sphere = 3, Ellipsoid = 4 };
+// Ellipsoid: x² + 4y² + z² = 1 (scene-format.md §9.4), the only unit shape reaching outside the unit cube.
+// Mesh: a triangle mesh from an OBJ file (§9.3), not a unit shape; the unit-shape code never sees it.
+enum class ShapeKind : unsigned char { Cube = 0, Cylinder = 1, Cone = 2, Sphere = 3, Ellipsoid = 4, Mesh = 5 };
 const char* shape_name(ShapeKind kind);
 
 // Which family of files the scene was written in (scene-format.md §9.4): the labs' own format
@@ -78,6 +79,8 @@ struct ObjectDesc {
     ShapeKind kind = ShapeKind::Cube;
     MaterialDesc material;
     SourceLoc loc;
+    std::string mesh_file = {};  // kind == Mesh: the OBJ file as written (§9.3)
+    SourceLoc mesh_loc = {};     // of its `file` keyword
 };
 
 struct SubgraphRef {

@@ -189,6 +189,7 @@ inline Span<T> intersect(ShapeKind kind, const Vec3<T>& o, const Vec3<T>& d) {
         case ShapeKind::Cylinder: return intersect_cylinder(o, d);
         case ShapeKind::Cone: return intersect_cone(o, d);
         case ShapeKind::Ellipsoid: return intersect_ellipsoid(o, d);
+        case ShapeKind::Mesh: break;  // not a unit shape: accel/ traverses its triangles
     }
     return {};
 }

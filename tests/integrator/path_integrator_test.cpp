@@ -4,6 +4,7 @@
 // Tolerances come from the sample counts (standard errors measured from the samples themselves).
 #include <cmath>
 #include <vector>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 #include "integrator/bsdf.h"
 #include "integrator/path_integrator.h"
 #include "integrator/path_lights.h"
+#include "integrator/path_test_support.h"
 #include "integrator/whitted_integrator.h"
 #include "render/renderer.h"
 #include "sampler/warp.h"
@@ -19,25 +21,9 @@
 namespace whitted {
 namespace {
 
-struct Stats {
-    double mean = 0, se = 0;  // the mean and its standard error
-};
-
-Stats stats_of(const std::vector<double>& v) {
-    double s = 0, s2 = 0;
-    for (double x : v) s += x, s2 += x * x;
-    const double n = double(v.size()), m = s / n;
-    return {m, std::sqrt(std::max(0.0, s2 / n - m * m) / (n - 1))};
-}
-
-// The per-sample estimates of one ray's radiance (channel 0).
-std::vector<double> samples_of(const PathIntegrator& path, const Ray& ray, int n, std::uint32_t pixel = 0) {
-    const Sampler sampler(1, n);
-    RayCounts counts;
-    std::vector<double> v;
-    for (int i = 0; i < n; ++i) v.push_back(path.radiance(ray, {pixel, 0, std::uint32_t(i)}, sampler, counts).x);
-    return v;
-}
+using test::samples_of;
+using test::Stats;
+using test::stats_of;
 
 // The camera inside a closed emitting, reflecting surface sees e / (1 − a) everywhere, whatever its shape.
 void expect_furnace(const glm::vec3& scale) {
@@ -48,23 +34,8 @@ void expect_furnace(const glm::vec3& scale) {
     m.emit = glm::vec3(e);
     b.add(ShapeKind::Sphere, test::translate_scale({0.3f, -0.2f, 0.1f}, scale), m);
     const Scene scene = b.build();
-    RenderJob job;
-    job.width = 12;
-    job.height = 10;
-    job.integrator = {RenderMode::Path, 64};
-    job.sampling.spp = 256;
-    const auto integrator = make_integrator(scene, scene.flat.camera, job.integrator);
-    Film film(job.width, job.height);
-    const RenderStats rs = render(*integrator, job, film);
-    EXPECT_EQ(rs.rays.rejected, 0u);
-    std::vector<double> pixels;
-    for (int y = 0; y < job.height; ++y)
-        for (int x = 0; x < job.width; ++x) pixels.push_back(film.at(x, y).value().x);
-    const Stats s = stats_of(pixels);
-    const double sd = s.se * std::sqrt(double(pixels.size()));  // one pixel's spread (256 samples)
-    EXPECT_NEAR(s.mean, e / (1 - a), 4 * s.se + 1e-3) << "scale " << scale.x << " " << scale.y << " " << scale.z;
-    for (double p : pixels) EXPECT_NEAR(p, e / (1 - a), 5 * sd + 1e-3);
-    EXPECT_GT(sd, 0.0);
+    SCOPED_TRACE("scale " + std::to_string(scale.x) + " " + std::to_string(scale.y) + " " + std::to_string(scale.z));
+    test::expect_furnace_image(scene, e / (1 - a));
 }
 
 TEST(PathIntegrator, FurnaceSeesEmitOverOneMinusAlbedoEverywhere) {

@@ -57,6 +57,12 @@ whitted_scene) all_rank_counts "$src/scenes/showcase.sc" ;;
 textured_scene) all_rank_counts "$src/scenes/textures.sc" --aa 2 ;;
 spp16_scene) all_rank_counts "$src/tests/mpi/effects.sc" --spp 16 ;;
 path_scene) all_rank_counts "$src/scenes/features/cornell_box.sc" --mode path --spp 8 --max-depth 8 ;;
+mesh_scene)
+    # Triangle meshes (§9.3) go through the same load path on every rank: Whitted, then path mode.
+    all_rank_counts "$src/scenes/features/mesh.sc"
+    reference "$src/scenes/features/mesh.sc" --mode path --spp 4 --max-depth 4
+    same_as_reference 3 "$src/scenes/features/mesh.sc" --mode path --spp 4 --max-depth 4 --tile-size 16 \
+        --test-schedule-seed 4 ;;
 adaptive_aa) reference "$src/scenes/showcase.sc" --aa 3 --aa-threshold 0.1
     same_as_reference 3 "$src/scenes/showcase.sc" --aa 3 --aa-threshold 0.1 --tile-size 8 --test-schedule-seed 5 ;;
 modes)

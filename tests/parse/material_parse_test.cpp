@@ -87,7 +87,7 @@ TEST(ParseMaterial, RangeErrorsAtTheValue) {
 TEST(ParseMaterial, ObjectTypeErrors) {
     EXPECT_TRUE(error_at(object("teapot [ ]"), 2, 8,
                          "unknown object type 'teapot' (expected one of: cube, cylinder, cone, "
-                         "sphere, ellipsoid); use --lenient"));
+                         "sphere, ellipsoid, mesh); use --lenient"));
     EXPECT_TRUE(error_at(object("]"), 2, 8, "expected an object type after 'object'"));
     EXPECT_TRUE(error_at(object("Cube"), 2, 8, "unknown object type 'Cube'"));  // case-sensitive
 }
@@ -95,7 +95,7 @@ TEST(ParseMaterial, ObjectTypeErrors) {
 TEST(ParseMaterial, UnknownKeywordAndStrayNumber) {
     EXPECT_TRUE(error_at(object("cube [ diffuse 1 1 1 opacity 0.9 ]"), 2, 29,
                          "unknown keyword 'opacity' in object block (expected one of: ambient, "
-                         "diffuse, specular, reflect, transparent, emit, shine, ior, gloss, texture, alpha); use "
+                         "diffuse, specular, reflect, transparent, emit, shine, ior, gloss, texture, alpha, file); use "
                          "--lenient to skip unknown keywords"));
     EXPECT_TRUE(error_at(object("cube [ diffuse 1 1 1 1 ]"), 2, 29,
                          "unexpected number '1' in object block"));

@@ -53,6 +53,7 @@ std::vector<glm::vec3> surface_points(ShapeKind k, std::mt19937& rng) {
                 pts.push_back(p);
                 break;
             }
+            case ShapeKind::Mesh: break;  // not a unit shape
         }
     }
     if (k == ShapeKind::Cube)

@@ -219,6 +219,7 @@ bool inside(ShapeKind k, glm::vec3 p) {
         case ShapeKind::Cylinder: return slab && r <= 0.5f;
         case ShapeKind::Cone: return slab && r <= (0.5f - p.y) / 2;
         case ShapeKind::Ellipsoid: return p.x * p.x + 4 * p.y * p.y + p.z * p.z <= 1;
+        case ShapeKind::Mesh: break;  // not a unit shape
     }
     return false;
 }

@@ -273,6 +273,7 @@ inline std::optional<HandHit> hand_intersect(ShapeKind kind, glm::dvec3 o, glm::
             }
             break;
         }
+        case ShapeKind::Mesh: break;  // not a unit shape
     }
     return best;
 }

@@ -1,0 +1,316 @@
+// Triangle meshes, whitted against Embree 3 on the same triangles and the same rays (issue 16).
+// One engine and one scene per process, so that each process's peak memory is its own:
+//   mesh_bench --engine whitted|embree --scene big|instances --threads 1|2
+// Scenes (generated here, deterministic):
+//   big:       one displaced UV sphere of 1,000,000 triangles (shared vertices), camera at 4 radii.
+//   instances: a 10,000-triangle displaced sphere instanced 10,000 times (100 × 100 grid, random
+//              rotation and scale), camera above the grid looking across it.
+// Measured: build time (whitted: the mesh BVH and the top level, as accelerate() does; Embree:
+// rtcCommitScene of the mesh scene and the instance scene, default quality), 640×480 primary rays
+// (one ray at a time: whitted Scene::intersect, Embree rtcIntersect1) and a shadow ray from every
+// hit toward a point light (Scene::occluded, rtcOccluded1), rays per second of wall time over
+// several passes on the given threads, and memory: the structures' own bytes where the engine says
+// (whitted: TriangleMesh::memory_bytes + the top level) and the process's peak RSS above what it
+// was after generating the triangles (both engines copy the triangles into their own buffers).
+// Never part of CI; see bench/RESULTS.md.
+#include <sys/resource.h>
+#include <time.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <embree3/rtcore.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "accel/scene.h"
+#include "flatten/flatten.h"
+#include "mesh/mesh_bvh.h"
+#include "mesh/uv_sphere.h"
+
+namespace {
+
+using namespace whitted;
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+double rss_mb() {
+    std::ifstream statm("/proc/self/statm");
+    double pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return resident * 4096.0 / 1e6;
+}
+double peak_rss_mb() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_maxrss) / 1e3;  // kB
+}
+
+// A UV sphere of radius ~1 with rings × segments bands, displaced by smooth bumps (so that the
+// BVH sees an uneven surface, not a perfect sphere).
+TriangleMesh displaced_sphere(int rings, int segments) {
+    return uv_sphere_mesh(rings, segments, [](const glm::vec3& d) {
+        return 1.0f + 0.15f * std::sin(7 * d.x) * std::sin(5 * d.y + 1) * std::sin(6 * d.z + 0.5f);
+    });
+}
+
+struct Setup {
+    TriangleMesh mesh;
+    std::vector<glm::mat4> placements;  // object → world
+    glm::vec3 eye, focus, light;
+};
+
+Setup make_setup(const std::string& scene) {
+    Setup s;
+    if (scene == "big") {
+        s.mesh = displaced_sphere(708, 708);  // 1,001,112 triangles
+        s.placements.push_back(glm::mat4(1.0f));
+        s.eye = {0.5f, 1.0f, 4.0f};
+        s.focus = {0, 0, 0};
+    } else {
+        s.mesh = displaced_sphere(71, 71);  // 9,940 triangles
+        std::mt19937 rng(16);
+        std::uniform_real_distribution<float> u(0.0f, 1.0f);
+        for (int i = 0; i < 10000; ++i) {
+            glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(3.0f * float(i % 100) - 150.0f, 0.0f,
+                                                                    3.0f * float(i / 100) - 150.0f));
+            m = glm::rotate(m, 6.2831853f * u(rng), glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f)));
+            s.placements.push_back(glm::scale(m, glm::vec3(0.6f + 0.8f * u(rng))));
+        }
+        s.eye = {-160.0f, 25.0f, -160.0f};
+        s.focus = {0, 0, 0};
+    }
+    s.light = s.eye + glm::vec3(30.0f, 60.0f, -10.0f);
+    return s;
+}
+
+constexpr int kWidth = 640, kHeight = 480;
+
+std::vector<Ray> camera_rays(const Setup& s) {
+    const glm::vec3 f = glm::normalize(s.focus - s.eye), r = glm::normalize(glm::cross(f, glm::vec3(0, 1, 0))),
+                    up = glm::cross(r, f);
+    const float tan_half = std::tan(0.5f * glm::radians(45.0f)), aspect = float(kWidth) / kHeight;
+    std::vector<Ray> rays;
+    rays.reserve(kWidth * kHeight);
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const float sx = (2 * (x + 0.5f) / kWidth - 1) * tan_half * aspect, sy = (1 - 2 * (y + 0.5f) / kHeight) * tan_half;
+            rays.push_back(Ray{s.eye, glm::normalize(f + sx * r + sy * up)});
+        }
+    return rays;
+}
+
+double thread_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+// Wall seconds, and the CPU seconds the workers actually ran: on a machine shared with other jobs
+// the second is the steadier measure of the code's own speed (preemption does not count in it).
+struct Timing {
+    double wall = 0, cpu = 0;
+};
+
+template <class Body>
+Timing run_parallel(std::size_t n, int threads, int passes, Body body) {
+    std::atomic<std::size_t> next{0};
+    const std::size_t chunk = 4096, chunks = (n + chunk - 1) / chunk;
+    std::vector<double> cpu(std::size_t(threads), 0.0);
+    const auto start = Clock::now();
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t)
+        pool.emplace_back([&, t] {
+            const double c0 = thread_cpu_seconds();
+            for (std::size_t c; (c = next.fetch_add(1)) < passes * chunks;) {
+                const std::size_t k = c % chunks;
+                body(k * chunk, std::min(n, (k + 1) * chunk));
+            }
+            cpu[std::size_t(t)] = thread_cpu_seconds() - c0;
+        });
+    for (auto& t : pool) t.join();
+    Timing timing{seconds_since(start), 0.0};
+    for (double c : cpu) timing.cpu += c;
+    return timing;
+}
+
+struct Result {
+    double build_s = 0, structure_mb = 0, rss_delta_mb = 0, peak_delta_mb = 0;
+    double primary_per_s = 0, shadow_per_s = 0, hit_fraction = 0, lit_fraction = 0;
+    double primary_per_cpu_s = 0, shadow_per_cpu_s = 0;  // rays per CPU second of the workers
+};
+
+constexpr int kPasses = 4;
+
+// Shadow rays from every primary hit toward the light (origin nudged off the surface).
+struct ShadowRay {
+    Ray ray;
+    float t_max;
+};
+
+Result run_whitted(Setup& s, const std::vector<Ray>& rays, int threads) {
+    Result res;
+    const double rss0 = rss_mb(), peak0 = peak_rss_mb();
+    FlatScene flat;
+    flat.materials.push_back(Material{});
+    flat.meshes.push_back(std::move(s.mesh));
+    for (const glm::mat4& m : s.placements) {
+        Instance inst = make_instance(m, ShapeKind::Mesh, 0);
+        inst.mesh = 0;
+        flat.instances.push_back(inst);
+    }
+    const auto t0 = Clock::now();
+    const Scene scene = accelerate(std::move(flat), threads);
+    res.build_s = seconds_since(t0);
+    res.rss_delta_mb = rss_mb() - rss0;
+    res.peak_delta_mb = peak_rss_mb() - peak0;
+    res.structure_mb = double(scene.flat.meshes[0].memory_bytes() + scene.flat.instances.capacity() * sizeof(Instance) +
+                              scene.bvh.nodes.capacity() * sizeof(Bvh4Node)) / 1e6;
+    std::vector<Hit> hits(rays.size());
+    std::vector<char> found(rays.size());
+    const Timing tp = run_parallel(rays.size(), threads, kPasses, [&](std::size_t b, std::size_t e) {
+        for (std::size_t i = b; i < e; ++i) found[i] = scene.intersect(rays[i], hits[i]);
+    });
+    res.primary_per_s = kPasses * double(rays.size()) / tp.wall;
+    res.primary_per_cpu_s = kPasses * double(rays.size()) / tp.cpu;
+    std::vector<ShadowRay> shadow;
+    for (std::size_t i = 0; i < rays.size(); ++i)
+        if (found[i]) {
+            const glm::vec3 p = rays[i].at(hits[i].t) - 1e-3f * rays[i].direction;
+            shadow.push_back({Ray{p, s.light - p}, 1.0f});
+        }
+    res.hit_fraction = double(shadow.size()) / double(rays.size());
+    std::vector<char> blocked(shadow.size());
+    const Timing ts = run_parallel(shadow.size(), threads, kPasses, [&](std::size_t b, std::size_t e) {
+        for (std::size_t i = b; i < e; ++i) blocked[i] = scene.occluded(shadow[i].ray, shadow[i].t_max);
+    });
+    res.shadow_per_s = kPasses * double(shadow.size()) / ts.wall;
+    res.shadow_per_cpu_s = kPasses * double(shadow.size()) / ts.cpu;
+    std::size_t lit = 0;
+    for (char c : blocked) lit += !c;
+    res.lit_fraction = double(lit) / double(std::max<std::size_t>(1, shadow.size()));
+    return res;
+}
+
+Result run_embree(Setup& s, const std::vector<Ray>& rays, int threads) {
+    Result res;
+    const double rss0 = rss_mb(), peak0 = peak_rss_mb();
+    const std::string config = "threads=" + std::to_string(threads);
+    RTCDevice device = rtcNewDevice(config.c_str());
+    const auto t0 = Clock::now();
+    RTCScene mesh_scene = rtcNewScene(device);
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                          3 * sizeof(float), s.mesh.positions.size()));
+    std::memcpy(v, s.mesh.positions.data(), s.mesh.positions.size() * 3 * sizeof(float));
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                               3 * sizeof(unsigned), s.mesh.triangles.size()));
+    std::memcpy(idx, s.mesh.triangles.data(), s.mesh.triangles.size() * 3 * sizeof(unsigned));
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(mesh_scene, g);
+    rtcReleaseGeometry(g);
+    rtcCommitScene(mesh_scene);
+    RTCScene top = mesh_scene;
+    if (s.placements.size() > 1) {
+        top = rtcNewScene(device);
+        for (const glm::mat4& m : s.placements) {
+            RTCGeometry inst = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+            rtcSetGeometryInstancedScene(inst, mesh_scene);
+            rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &m[0][0]);
+            rtcCommitGeometry(inst);
+            rtcAttachGeometry(top, inst);
+            rtcReleaseGeometry(inst);
+        }
+        rtcCommitScene(top);
+    }
+    res.build_s = seconds_since(t0);
+    res.rss_delta_mb = rss_mb() - rss0;
+    res.peak_delta_mb = peak_rss_mb() - peak0;
+    res.structure_mb = 0;  // Embree does not say; see the RSS figures
+    std::vector<float> hit_t(rays.size());
+    const Timing tp = run_parallel(rays.size(), threads, kPasses, [&](std::size_t b, std::size_t e) {
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        for (std::size_t i = b; i < e; ++i) {
+            RTCRayHit rh{};
+            rh.ray.org_x = rays[i].origin.x, rh.ray.org_y = rays[i].origin.y, rh.ray.org_z = rays[i].origin.z;
+            rh.ray.dir_x = rays[i].direction.x, rh.ray.dir_y = rays[i].direction.y, rh.ray.dir_z = rays[i].direction.z;
+            rh.ray.tnear = 0.0f;
+            rh.ray.tfar = INFINITY;
+            rh.ray.mask = ~0u;
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+            rtcIntersect1(top, &ctx, &rh);
+            hit_t[i] = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID ? rh.ray.tfar : -1.0f;
+        }
+    });
+    res.primary_per_s = kPasses * double(rays.size()) / tp.wall;
+    res.primary_per_cpu_s = kPasses * double(rays.size()) / tp.cpu;
+    std::vector<ShadowRay> shadow;
+    for (std::size_t i = 0; i < rays.size(); ++i)
+        if (hit_t[i] >= 0.0f) {
+            const glm::vec3 p = rays[i].at(hit_t[i]) - 1e-3f * rays[i].direction;
+            shadow.push_back({Ray{p, s.light - p}, 1.0f});
+        }
+    res.hit_fraction = double(shadow.size()) / double(rays.size());
+    std::vector<char> blocked(shadow.size());
+    const Timing ts = run_parallel(shadow.size(), threads, kPasses, [&](std::size_t b, std::size_t e) {
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        for (std::size_t i = b; i < e; ++i) {
+            RTCRay r{};
+            r.org_x = shadow[i].ray.origin.x, r.org_y = shadow[i].ray.origin.y, r.org_z = shadow[i].ray.origin.z;
+            r.dir_x = shadow[i].ray.direction.x, r.dir_y = shadow[i].ray.direction.y, r.dir_z = shadow[i].ray.direction.z;
+            r.tnear = 0.0f;
+            r.tfar = shadow[i].t_max;
+            r.mask = ~0u;
+            rtcOccluded1(top, &ctx, &r);
+            blocked[i] = r.tfar < 0.0f;  // Embree sets tfar = -inf when occluded
+        }
+    });
+    res.shadow_per_s = kPasses * double(shadow.size()) / ts.wall;
+    res.shadow_per_cpu_s = kPasses * double(shadow.size()) / ts.cpu;
+    std::size_t lit = 0;
+    for (char c : blocked) lit += !c;
+    res.lit_fraction = double(lit) / double(std::max<std::size_t>(1, shadow.size()));
+    if (top != mesh_scene) rtcReleaseScene(top);
+    rtcReleaseScene(mesh_scene);
+    rtcReleaseDevice(device);
+    return res;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string engine = "whitted", scene = "big";
+    int threads = 1;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string k = argv[i], v = argv[i + 1];
+        if (k == "--engine") engine = v;
+        else if (k == "--scene") scene = v;
+        else if (k == "--threads") threads = std::stoi(v);
+        else {
+            std::fprintf(stderr, "usage: mesh_bench --engine whitted|embree --scene big|instances --threads N\n");
+            return 2;
+        }
+    }
+    Setup s = make_setup(scene);
+    const std::size_t triangles = s.mesh.triangles.size();
+    const std::vector<Ray> rays = camera_rays(s);
+    const Result r = engine == "embree" ? run_embree(s, rays, threads) : run_whitted(s, rays, threads);
+    std::printf("%-7s %-9s threads %d: %zu triangles x %zu instances | build %.3f s | structure %.1f MB "
+                "(%.1f B/triangle) | RSS +%.1f MB, peak +%.1f MB | primary %.2f Mrays/s, %.2f per CPU-s (hit %.3f) | "
+                "shadow %.2f Mrays/s, %.2f per CPU-s (lit %.3f)\n",
+                engine.c_str(), scene.c_str(), threads, triangles, s.placements.size(), r.build_s, r.structure_mb,
+                r.structure_mb * 1e6 / double(triangles), r.rss_delta_mb, r.peak_delta_mb, r.primary_per_s / 1e6,
+                r.primary_per_cpu_s / 1e6, r.hit_fraction, r.shadow_per_s / 1e6, r.shadow_per_cpu_s / 1e6,
+                r.lit_fraction);
+    return 0;
+}

@@ -1,0 +1,41 @@
+#pragma once
+// The 4-wide BVH's nodes, as plain data: the top level over instances (accel/bvh.h) and the
+// bottom level over a mesh's triangles (mesh/mesh_bvh.h) are both made of them.
+#include <cstdint>
+#include <vector>
+
+#include "shapes/bounds.h"
+
+namespace whitted {
+
+// 128 bytes, two cache lines. box[row][slot]: rows lo.x, lo.y, lo.z, hi.x, hi.y, hi.z. An unused
+// slot has an empty box (lo = +inf, hi = -inf) that no ray enters.
+struct alignas(64) Bvh4Node {
+    float box[6][4];
+    // Per slot: inner child = its node index; leaf = kLeafBit | first primitive << 4 | (count - 1).
+    std::uint32_t child[4];
+    std::uint32_t pad[4];
+
+    static constexpr std::uint32_t kLeafBit = 0x80000000u;
+    static constexpr std::uint32_t kMaxLeafSize = 16;
+    static constexpr std::uint32_t kMaxInstances = 1u << 27;
+    static bool is_leaf(std::uint32_t ref) { return (ref & kLeafBit) != 0; }
+    static std::uint32_t leaf_first(std::uint32_t ref) { return (ref & ~kLeafBit) >> 4; }
+    static std::uint32_t leaf_count(std::uint32_t ref) { return (ref & 15u) + 1; }
+};
+static_assert(sizeof(Bvh4Node) == 128);
+
+struct Bvh {
+    std::vector<Bvh4Node> nodes;  // nodes[0] is the root; empty for an empty scene
+    Bounds box;                   // of the whole scene
+    Bounds bounds() const { return box; }
+};
+
+// The costs the binned SAH build weighs: a traversal step against one primitive test, and the
+// most primitives a leaf may hold (<= Bvh4Node::kMaxLeafSize).
+struct BvhBuildCosts {
+    float traversal_cost;
+    std::uint32_t max_leaf;
+};
+
+}  // namespace whitted

@@ -1,0 +1,52 @@
+#pragma once
+// A triangle mesh in object space (scene-format.md §9.3), as read from an OBJ file: shared
+// vertex positions, optional per-corner normals and texture coordinates, and the bottom-level
+// BVH over its triangles (mesh/mesh_bvh.h), which fixes the triangles' order. Stored once
+// however many instances draw it.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "accel/bvh_node.h"
+
+namespace whitted {
+
+using TriangleIndices = std::array<std::uint32_t, 3>;
+
+struct TriangleMesh {
+    static constexpr std::uint32_t kNone = 0xffffffffu;  // a corner without a normal or uv
+
+    std::vector<glm::vec3> positions;
+    std::vector<TriangleIndices> triangles;  // into positions, counter-clockwise seen from outside
+    // Per triangle, into normals / uvs; empty when the file gives none. A triangle whose corners
+    // lack them has kNone there (then its geometric normal, or uv (0, 0)).
+    std::vector<glm::vec3> normals;
+    std::vector<TriangleIndices> normal_indices;
+    std::vector<glm::vec2> uvs;
+    std::vector<TriangleIndices> uv_indices;
+    Bvh bvh;       // over `triangles`, whose order it set (build_mesh_bvh)
+    Bounds box;    // of all positions used by triangles
+    std::string path;  // the file it came from, for messages
+
+    std::size_t triangle_count() const { return triangles.size(); }
+    // Bytes of heap memory held (geometry and BVH), for the memory budget of §9.3's issue.
+    std::size_t memory_bytes() const;
+};
+
+// The geometric normal of triangle `t` (unnormalised: (p1 − p0) × (p2 − p0), outward for
+// counter-clockwise corners) and its area.
+glm::vec3 triangle_geometric_normal(const TriangleMesh& mesh, std::uint32_t t);
+float triangle_area(const TriangleMesh& mesh, std::uint32_t t);
+
+// The object-space shading normal at barycentrics (u, v) of triangle `t` (weights 1 − u − v, u, v
+// of its corners): the file's normals interpolated where given, else the geometric normal. Unit.
+glm::vec3 mesh_shading_normal(const TriangleMesh& mesh, std::uint32_t t, float u, float v);
+
+// Texture coordinates at (u, v) of triangle `t`: the file's vt interpolated, with v flipped so
+// that vt (0, 0) is the image's bottom-left corner as in every OBJ exporter; (0, 0) without vt.
+glm::vec2 mesh_uv(const TriangleMesh& mesh, std::uint32_t t, float u, float v);
+
+}  // namespace whitted
