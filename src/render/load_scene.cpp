@@ -20,6 +20,7 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     result.unreadable = parsed.unreadable;
     result.diagnostics = std::move(parsed.diagnostics);
     result.stats.dialect = parsed.scene.dialect;
+    result.camera = parsed.scene.camera;
     if (has_errors(result.diagnostics) || cancelled()) return result;
 
     auto t = Clock::now();
@@ -30,7 +31,7 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
 
     t = Clock::now();
     result.missing_textures = load_textures(flat, parsed.scene.path, options.textures, result.diagnostics,
-                                             &result.texture_files);
+                                             &result.texture_files, &result.texture_paths);
     result.stats.texture_seconds = since(t);
     if (has_errors(result.diagnostics) || cancelled()) return result;
 
