@@ -88,6 +88,7 @@ void ViewerWindow::change_exposure(int stops) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "exposure %+g stops", double(view_->exposure()));
     set_message(buf);
+    rewrite_ready_file_soon();
 }
 
 // A tool bar setting changed: render again once the user has stopped typing or clicking.

@@ -105,10 +105,10 @@ void ViewerWindow::build_menus() {
         self->render(true);
     }, this, FL_MENU_TOGGLE | (options_.checker_textures ? FL_MENU_VALUE : 0));
 
-    m->add("&View/&Fit", 'f', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->view_->zoom_fit(); }, this);
-    m->add("&View/&1:1", '1', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->view_->zoom_one(); }, this);
-    m->add("&View/Zoom &in", '+', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->view_->zoom_by(1); }, this);
-    m->add("&View/Zoom &out", '-', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->view_->zoom_by(-1); }, this, FL_MENU_DIVIDER);
+    m->add("&View/&Fit", 'f', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->zoom_view(Zoom::Fit); }, this);
+    m->add("&View/&1:1", '1', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->zoom_view(Zoom::One); }, this);
+    m->add("&View/Zoom &in", '+', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->zoom_view(Zoom::In); }, this);
+    m->add("&View/Zoom &out", '-', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->zoom_view(Zoom::Out); }, this, FL_MENU_DIVIDER);
     m->add("&View/&Exposure up", ']', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->change_exposure(1); }, this);
     m->add("&View/E&xposure down", '[', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->change_exposure(-1); }, this);
     m->add("&View/Exposure &0", '\\', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->change_exposure(0); }, this, FL_MENU_DIVIDER);
@@ -232,7 +232,17 @@ void ViewerWindow::layout_toolbar() {
     }
 }
 
-// Fly keys and the rest that the image handles when the focus is elsewhere (not a text field).
+void ViewerWindow::zoom_view(Zoom how) {
+    switch (how) {
+        case Zoom::Fit: view_->zoom_fit(); break;
+        case Zoom::One: view_->zoom_one(); break;
+        case Zoom::In: view_->zoom_by(1); break;
+        case Zoom::Out: view_->zoom_by(-1); break;
+    }
+    rewrite_ready_file_soon();
+}
+
+// Drag and drop: a scene file dropped on the window (text/uri-list, or a plain path) is opened.
 int ViewerWindow::handle(int event) {
     if (event == FL_DND_ENTER || event == FL_DND_DRAG || event == FL_DND_RELEASE) return 1;  // accept drops
     if (event == FL_DND_LEAVE) return 1;

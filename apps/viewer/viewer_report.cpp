@@ -79,7 +79,8 @@ void ViewerWindow::write_ready_file() {
             << "image " << x() + vis.x << " " << y() + vis.y << " " << vis.w << " " << vis.h << "\n"
             << "watch_ticks " << watch_ticks_ << "\n"
             << "zoom " << view_->scale() << (view_->fitting() ? " fit" : "") << "\n"
-            << "dimmed " << (view_->dimmed ? 1 : 0) << "\n";
+            << "dimmed " << (view_->dimmed ? 1 : 0) << "\n"
+            << "exposure " << view_->exposure() << "\n";
         if (const std::optional<CameraDesc> cam = current_camera())
             out << "camera " << (camera_ ? "moved " : "file ") << camera_block(*cam) << "\n";
         for (const std::string& r : recent_) out << "recent " << r << "\n";

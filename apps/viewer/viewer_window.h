@@ -64,6 +64,8 @@ public:
     void copy_camera();
     void save_camera_into_scene();
     void fly_key(char key);
+    enum class Zoom { Fit, One, In, Out };
+    void zoom_view(Zoom how);
     void change_exposure(int stops);  // 0 = back to 0
     void ask_aa_threshold();
 

@@ -252,6 +252,7 @@ struct Ready {
     std::string camera;                              // "file camera [ ... ]" or "moved camera [ ... ]"
     bool dimmed = false;                             // the image is shown dimmed under an error banner
     std::vector<std::string> recent;                 // File > Open recent, most recent first
+    double exposure = 0;                             // of the image view, in stops
 };
 
 Ready read_ready(const std::string& path) {
@@ -284,6 +285,8 @@ Ready read_ready(const std::string& path) {
         } else if (key == "dimmed") {
             ls >> word;
             r.dimmed = word == "1";
+        } else if (key == "exposure") {
+            ls >> r.exposure;
         } else if (key == "recent") {
             r.recent.push_back(line.substr(std::min(line.size(), key.size() + 1)));
         }
@@ -1145,6 +1148,65 @@ TEST_F(ViewerWorkbench, RecentFilesAndTheWindowSizeSurviveARestart) {
     EXPECT_EQ(r.window.w, 720);
     EXPECT_EQ(r.window.h, 520);
     EXPECT_EQ(r.recent, (std::vector<std::string>{scene_, first_scene}));
+    viewer->signal(SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
+// Zoom with '+' (2x, nearest neighbour: each image pixel a 2 x 2 block) and exposure with ']'
+// (one stop: each byte doubled, clamped), about the centre of the area.
+TEST_F(ViewerWorkbench, ZoomShowsPixelsAsBlocksAndExposureDoublesTheBytes) {
+    auto viewer = start_viewer({});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    keys("plus");
+    Ready zoomed;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, zoomed, [](const Ready& n) { return n.image.w == 2 * kW; }, 20s))
+        << viewer->output();
+    ASSERT_EQ(zoomed.image.h, 2 * kH);
+    const Image screen = grab_screen(x_.display(), dir_ + "/zoomed.png");
+    int wrong = 0;
+    for (int y = 0; y < 2 * kH; ++y)
+        for (int x = 0; x < 2 * kW; ++x)
+            wrong += screen.at(zoomed.image.x + x, zoomed.image.y + y) != red_.at(x / 2, y / 2);
+    EXPECT_EQ(wrong, 0) << "see " << dir_ << "/zoomed.png";
+
+    keys("1 bracketright");
+    Ready exposed;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, exposed,
+                               [](const Ready& n) { return n.image.w == kW && n.exposure == 1.0; }, 20s))
+        << viewer->output();
+    const Image bright = grab_screen(x_.display(), dir_ + "/exposed.png");
+    wrong = 0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const glm::ivec3 want = glm::min(glm::ivec3(red_.at(x, y)) * 2, glm::ivec3(255));
+            wrong += glm::ivec3(bright.at(exposed.image.x + x, exposed.image.y + y)) != want;
+        }
+    EXPECT_EQ(wrong, 0) << "see " << dir_ << "/exposed.png";
+    viewer->signal(SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
+// --watch also reloads when a texture file of the scene changes (not only the scene file).
+TEST_F(ViewerWorkbench, WatchReloadsWhenATextureChanges) {
+    Image tex(4, 4);
+    std::fill(tex.rgb.begin(), tex.rgb.end(), std::uint8_t(200));
+    ASSERT_EQ(write_image(tex, dir_ + "/tex.png"), "");
+    std::ofstream(scene_, std::ios::trunc) << sphere_scene("1 1 1", "tex.png");
+    auto viewer = start_viewer({"--watch"});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    const auto before = fs::last_write_time(dir_ + "/tex.png");
+    std::fill(tex.rgb.begin(), tex.rgb.end(), std::uint8_t(40));
+    ASSERT_EQ(write_image(tex, dir_ + "/tex.png"), "");
+    fs::last_write_time(dir_ + "/tex.png", before + 2s);
+    Ready again;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, again,
+                               [&](const Ready& n) { return n.job > first.job && n.state == "finished"; }, 30s))
+        << "the changed texture was not loaded again:\n" << viewer->output();
+    EXPECT_FALSE(again.reused);
     viewer->signal(SIGTERM);
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
