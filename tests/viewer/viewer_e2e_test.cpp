@@ -1211,6 +1211,17 @@ TEST_F(ViewerWorkbench, WatchReloadsWhenATextureChanges) {
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
+TEST_F(ViewerWorkbench, F1OpensTheKeyboardShortcutsWindow) {
+    auto viewer = start_viewer({});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    keys("F1");
+    EXPECT_FALSE(wait_for_window(x_.display(), "^Keyboard shortcuts$", 20s).empty()) << viewer->output();
+    viewer->signal(SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
 }  // namespace
 }  // namespace whitted
 #endif
