@@ -34,7 +34,8 @@ for _ in $(seq 100); do [[ -s "$tmp/display" ]] && break; sleep 0.1; done
 display=":$(head -n1 "$tmp/display")"
 
 # shellcheck disable=SC2086  # VIEWER_ARGS is a list of options
-DISPLAY="$display" "$viewer" "$scene" --window-size 1000x720 --fit --missing-textures checker \
+# A HOME of its own: the window remembers recent files and its size there (Fl_Preferences).
+HOME="$tmp" DISPLAY="$display" "$viewer" "$scene" --window-size 1000x720 --fit --missing-textures checker \
     --ready-file "$tmp/ready" ${VIEWER_ARGS:-} 2>"$tmp/viewer.log" &
 viewer_pid=$!
 for _ in $(seq 1200); do [[ -f "$tmp/ready" ]] && break; sleep 0.1; done

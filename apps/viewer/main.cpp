@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
         ->check(CLI::Validator(
             [](std::string& s) { return std::isfinite(std::strtof(s.c_str(), nullptr)) ? "" : "not a finite number: " + s; },
             "FINITE"));
-    app.add_option("--window-size", [&o](const CLI::results_t& r) {
+    auto* window_size = app.add_option("--window-size", [&o](const CLI::results_t& r) {
         return std::sscanf(r[0].c_str(), "%dx%d", &o.window_width, &o.window_height) == 2 && o.window_width > 0 &&
                o.window_height > 0;
     }, "Window size WxH (default 1000x760)")->type_name("WxH");
@@ -132,6 +132,12 @@ int main(int argc, char** argv) {
         std::cerr << "whitted-view: error: --screenshot and --exit-when-done need a scene file to render\n";
         return 1;
     }
+    o.window_size_given = window_size->count() > 0;
+    // Render settings on the command line replace the remembered ones (all of them).
+    for (const char* name : {"--width", "--height", "--fit", "--max-depth", "--aa", "--spp", "--mode"})
+        o.settings_given = o.settings_given || app.get_option(name)->count() > 0;
+    // Scripts and tests get what they ask for, never what an earlier run left behind.
+    if (o.exit_when_done || !o.ready_file.empty()) o.settings_given = true;
     o.settings.integrator.mode = *parse_render_mode(mode_name);
     if (o.settings.integrator.mode == RenderMode::Path) {  // §9.2: a path tracer's defaults
         if (spp_option->count() == 0) o.settings.sampling.spp = 64;

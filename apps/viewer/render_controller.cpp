@@ -62,6 +62,7 @@ struct RenderController::Job {
     std::string path;  // "" when the scene was given
     LoadOptions load;
     bool force_reload = false;
+    bool coarse_first = false;
     std::shared_ptr<const Scene> scene;
     RenderJob settings;
     std::atomic<bool> cancel{false};
@@ -116,12 +117,13 @@ void RenderController::begin_locked(std::shared_ptr<Job> job, const std::string&
 }
 
 void RenderController::start(const std::string& scene_path, const LoadOptions& load, const RenderJob& settings,
-                             bool force_reload) {
+                             bool force_reload, bool coarse_first) {
     reap();
     auto job = std::make_shared<Job>();
     job->path = scene_path;
     job->load = load;
     job->force_reload = force_reload;
+    job->coarse_first = coarse_first;
     std::lock_guard lock(mutex_);
     begin_locked(job, scene_path, settings);
     launch(job);
@@ -184,6 +186,8 @@ void RenderController::run(std::shared_ptr<Job> job) {
         status_.missing_textures = loaded.missing_textures;
         status_.load_stats = loaded.stats;
         status_.scene_reused = reused;
+        status_.file_camera = loaded.camera;
+        status_.texture_files = loaded.texture_paths;
         status_.message = summary(loaded.diagnostics);
         if (!loaded.ok()) {
             status_.state = loaded.missing_textures.empty() ? RenderState::Failed : RenderState::MissingTextures;
@@ -204,12 +208,42 @@ void RenderController::run(std::shared_ptr<Job> job) {
         status_.tiles_total = s.tile_count() * int(passes.size());
         status_.samples_total = passes.back();
         status_.passes_total = int(passes.size());
-        image_ = Image(s.width, s.height);
-        ++image_version_;
+        // A moving camera keeps the last frame until the first coarse one replaces it.
+        if (!job->coarse_first || image_.width != s.width || image_.height != s.height) {
+            image_ = Image(s.width, s.height);
+            ++image_version_;
+        }
         changed_.notify_all();
     }
-    Film film(s.width, s.height);
     const auto integrator = make_integrator(*scene, s.camera_for(*scene), s.integrator);
+    if (job->coarse_first) {
+        // Coarse frames: the same camera at 1/n of the size (the aspect ratio kept as well as whole
+        // pixels allow), one sample per pixel, each shown enlarged as soon as it is done.
+        for (int div : kPreviewDivisors) {
+            RenderJob small = s;
+            small.width = std::max(1, (s.width + div - 1) / div);
+            small.height = std::max(1, (s.height + div - 1) / div);
+            small.region.reset();
+            small.sampling = SamplingSettings{};
+            small.sample_begin = 0;
+            small.sample_end = -1;
+            small.cancel = &job->cancel;
+            small.on_tile = nullptr;
+            Film small_film(small.width, small.height);
+            if (render(*integrator, small, small_film).cancelled) break;
+            Image small_image(small.width, small.height);
+            small_film.write_to(small_image, PixelRegion{0, 0, small.width, small.height});
+            Image big = enlarge_nearest(small_image, s.width, s.height);
+            std::lock_guard lock(mutex_);
+            if (!is_current()) return finish();
+            image_ = std::move(big);
+            ++image_version_;
+            ++status_.frames;
+            status_.preview_divisor = div;
+            changed_.notify_all();
+        }
+    }
+    Film film(s.width, s.height);
     RenderJob pass = s;
     pass.cancel = &job->cancel;
     pass.on_tile = [&](const Tile& t) {
@@ -218,6 +252,7 @@ void RenderController::run(std::shared_ptr<Job> job) {
         if (!is_current()) return;
         film.write_to(image_, t);
         ++status_.tiles_done;
+        if (status_.tiles_done == s.tile_count()) status_.preview_divisor = 1;  // the first full pass is in
         ++image_version_;
     };
     bool cancelled = false;
@@ -238,6 +273,19 @@ void RenderController::run(std::shared_ptr<Job> job) {
         status_.elapsed_seconds = seconds_since(started_);
     }
     finish();
+}
+
+Image enlarge_nearest(const Image& small, int width, int height) {
+    Image big(width, height);
+    if (small.width <= 0 || small.height <= 0) return big;
+    for (int y = 0; y < height; ++y) {
+        const int sy = int(std::int64_t(y) * small.height / height);
+        for (int x = 0; x < width; ++x) {
+            const int sx = int(std::int64_t(x) * small.width / width);
+            std::memcpy(&big.rgb[(std::size_t(y) * width + x) * 3], &small.rgb[(std::size_t(sy) * small.width + sx) * 3], 3);
+        }
+    }
+    return big;
 }
 
 std::vector<int> sample_passes(const SamplingSettings& sampling) {

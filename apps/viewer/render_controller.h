@@ -52,7 +52,18 @@ struct RenderStatus {
     LoadStats load_stats;         // objects and lights are known once the load succeeded
     bool scene_reused = false;    // the loaded scene of the previous job was used again (file unchanged)
     std::string message;          // the last error or warning, one line, for a status bar ("" if none)
+    // The image now shown was rendered at 1/preview_divisor of the resolution (1 = full): a job
+    // started with coarse_first shows 1/8, 1/4 and 1/2 resolution frames before the full one.
+    int preview_divisor = 1;
+    std::uint64_t frames = 0;     // coarse frames of this job shown so far
+    CameraDesc file_camera;       // the loaded scene file's camera as written (LoadResult::camera)
+    std::vector<std::string> texture_files;  // the files its textures were read from (LoadResult::texture_paths)
 };
+
+// The resolutions of the coarse frames a moving camera gets before the full image, as divisors.
+inline constexpr int kPreviewDivisors[] = {8, 4, 2};
+// The nearest-neighbour enlargement of `small` to width × height (a coarse frame shown full size).
+Image enlarge_nearest(const Image& small, int width, int height);
 
 class RenderController {
 public:
@@ -65,8 +76,11 @@ public:
     // Returns at once; a job still running is cancelled first (without waiting for it).
     // If the file, its modification time and the load options are those of the last successful
     // load, that scene is rendered again without loading (pass force_reload to load anyway).
+    // coarse_first (a camera that moves): 1/8, 1/4 and 1/2 resolution frames come first (one
+    // sample per pixel, each shown enlarged), then the full image over the last of them, then its
+    // sample passes; the previous image stays on screen until the first coarse frame replaces it.
     void start(const std::string& scene_path, const LoadOptions& load, const RenderJob& settings,
-               bool force_reload = false);
+               bool force_reload = false, bool coarse_first = false);
     // Renders a scene that is already loaded (no file involved).
     void start(std::shared_ptr<const Scene> scene, const RenderJob& settings);
 

@@ -2,12 +2,14 @@
 // The viewer's main window (FLTK 1.3). Everything here runs on the UI thread; rendering happens in
 // the RenderController's threads, which this window polls ten times a second.
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
 #include <FL/Fl_Double_Window.H>
 
+#include "image_view.h"
 #include "render_controller.h"
 
 class Fl_Menu_Bar;
@@ -15,13 +17,12 @@ class Fl_Button;
 class Fl_Spinner;
 class Fl_Check_Button;
 class Fl_Choice;
-class Fl_Browser;
 class Fl_Box;
-class Fl_Scroll;
+class Fl_Text_Display;
+class Fl_Text_Buffer;
+class Fl_Value_Slider;
 
 namespace whitted::viewer {
-
-class ImageView;
 
 struct ViewerOptions {
     std::string scene;                       // "" = start empty
@@ -33,6 +34,8 @@ struct ViewerOptions {
     bool checker_textures = false;           // never ask: draw missing textures as a checkerboard
     std::vector<std::string> texture_dirs;
     int window_width = 1000, window_height = 760;
+    bool window_size_given = false;          // --window-size (else the remembered size)
+    bool settings_given = false;             // a render setting on the command line (else the remembered ones)
     // For tests and scripts: after the first render ends (finished, failed or stopped) and is drawn,
     std::string screenshot;                  // save the image area's displayed pixels (fl_read_image) here,
     std::string ready_file;                  // write job, state, geometry and messages here (again when a
@@ -54,6 +57,17 @@ public:
     bool quitting() const { return quitting_; }
 
     void resize(int x, int y, int w, int h) override;
+    int handle(int event) override;
+
+    // The camera (issue 12): moved on the image, back to the file's (Home), into the text.
+    void home();
+    void copy_camera();
+    void save_camera_into_scene();
+    void fly_key(char key);
+    enum class Zoom { Fit, One, In, Out };
+    void zoom_view(Zoom how);
+    void change_exposure(int stops);  // 0 = back to 0
+    void ask_aa_threshold();
 
 private:
     static void poll_cb(void* self);
@@ -67,6 +81,20 @@ private:
     void layout();
     void layout_toolbar();
     void layout_status();
+    void build_menus();
+    void build_toolbar();
+    void connect_view();
+    void render_view();  // renders with the camera on screen, coarse frames first
+    std::optional<CameraDesc> current_camera() const;  // the one on screen, if known
+    void show_shortcuts();
+    void remember();  // recent files, window size and settings into the preferences
+    void add_recent(const std::string& path);
+    void rebuild_recent_menu();
+    void load_preferences();
+    void settings_changed();
+    static void settings_cb(void* self);
+    std::string watch_stamp() const;  // the scene file's and its textures' stamps
+    std::string relative_to_scene(std::string text) const;
     void read_controls(RenderJob& settings, bool& fit);
     void update_status(const RenderStatus& st);
     void show_messages(const RenderStatus& st);
@@ -99,10 +127,10 @@ private:
         int gap, label_w, w, h;  // space before it, then its label (drawn to its left), then the widget
     };
     std::vector<Tool> tools_;
-    Fl_Scroll* scroll_ = nullptr;
     ImageView* view_ = nullptr;
-    Fl_Browser* messages_ = nullptr;
-    Fl_Box *scene_box_ = nullptr, *progress_box_ = nullptr, *message_box_ = nullptr;
+    Fl_Text_Display* messages_ = nullptr;
+    Fl_Text_Buffer *message_text_ = nullptr, *message_styles_ = nullptr;
+    Fl_Box *scene_box_ = nullptr, *progress_box_ = nullptr, *message_box_ = nullptr, *pixel_box_ = nullptr;
     bool show_messages_ = false;
 
     std::string scene_;
@@ -118,6 +146,15 @@ private:
     bool quitting_ = false;
     std::string extra_message_;  // a message of the viewer's own (e.g. a failed save)
     int exit_code_ = 0;
+
+    // The camera on screen: none = the file's. The file's camera as written (of the last load that
+    // got that far), and the camera when the current drag began.
+    std::optional<CameraDesc> camera_;
+    std::optional<CameraDesc> file_camera_;
+    CameraDesc drag_start_;
+    bool in_drag_ = false;
+    std::string pixel_text_;  // the readout of the pixel under the pointer
+    std::vector<std::string> recent_;  // most recent first
 
     // Remembered for the session: texture name as written → file the user picked; scenes for
     // which the user declined to pick (rendered with the checkerboard from then on).

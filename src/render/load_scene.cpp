@@ -24,6 +24,7 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     result.unreadable = parsed.unreadable;
     result.diagnostics = std::move(parsed.diagnostics);
     result.stats.dialect = parsed.scene.dialect;
+    result.camera = parsed.scene.camera;
     if (has_errors(result.diagnostics) || cancelled()) return result;
 
     auto t = Clock::now();
@@ -42,7 +43,7 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     textures.limits.max_total_bytes =
         std::min(textures.limits.max_total_bytes, options.max_memory - std::min(options.max_memory, for_objects));
     result.missing_textures = load_textures(flat, parsed.scene.path, textures, result.diagnostics,
-                                             &result.texture_files);
+                                             &result.texture_files, &result.texture_paths);
     result.stats.texture_seconds = since(t);
     if (has_errors(result.diagnostics) || cancelled()) return result;
     // Meshes (§9.3) are looked up where textures are.

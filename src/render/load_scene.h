@@ -41,6 +41,8 @@ struct LoadResult {
     std::vector<Diagnostic> path_warnings;   // warnings that hold only in --mode path (§9.2)
     TextureFiles texture_files;  // with LoadOptions::textures.keep_files: the bytes of each texture file
     LoadStats stats;
+    std::vector<std::string> texture_paths;  // the files the textures were read from (a viewer watches them)
+    CameraDesc camera;  // the file's camera as written (eye, focus, up, angle): where the viewer's navigation starts
     bool cancelled = false;   // LoadOptions::cancel was set: no scene, no error
     bool unreadable = false;  // the scene file could not be read (an I/O failure, not a bad scene)
     bool ok() const { return scene != nullptr; }

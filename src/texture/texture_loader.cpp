@@ -131,7 +131,7 @@ std::vector<std::string> loose_texture_candidates(const std::string& name, const
 
 std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string& scene_path,
                                           const TextureOptions& options, std::vector<Diagnostic>& diagnostics,
-                                          TextureFiles* kept) {
+                                          TextureFiles* kept, std::vector<std::string>* files_read) {
     std::vector<MissingTexture> missing;
     std::unordered_map<std::string, int> index_of_file;  // resolved path → texture index
     std::unordered_map<std::string, int> index_of_name;  // name as written → index (or checker)
@@ -244,6 +244,7 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
             index_of_file[key] = index;
             name_of_file[key] = ref.file;
             if (kept && options.keep_files) (*kept)[ref.file].assign(bytes.begin(), bytes.end());
+            if (files_read) files_read->push_back(c);
             if (!reason.empty())
                 diagnostics.push_back({Severity::Warning, ref.loc,
                                        "texture '" + ref.file + "': skipped an unreadable file (" + reason +

@@ -70,10 +70,11 @@ std::vector<std::string> loose_texture_candidates(const std::string& name, const
 // tried (with a warning if one of them works). Returns the textures that could not be had, each
 // once, with the first `texture` keyword that named it; under Error each is an error diagnostic,
 // under Checker they are drawn as a checkerboard and a warning is added.
-// With options.keep_files, `kept` (when given) gets the bytes of each file decoded.
+// With options.keep_files, `kept` (when given) gets the bytes of each file decoded; `files_read`
+// (when given) gets the path of each file decoded (a viewer watches them).
 std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string& scene_path,
                                           const TextureOptions& options, std::vector<Diagnostic>& diagnostics,
-                                          TextureFiles* kept = nullptr);
+                                          TextureFiles* kept = nullptr, std::vector<std::string>* files_read = nullptr);
 
 // A visible stand-in for a missing texture: magenta and black squares.
 TextureImage checker_texture();

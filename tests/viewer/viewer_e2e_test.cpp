@@ -62,6 +62,9 @@ struct Child {
                 dup2(fd, STDOUT_FILENO);
                 dup2(fd, STDERR_FILENO);
             }
+            // The viewer remembers things in $HOME: each test gets its own (its log's folder)
+            // unless it sets one, so runs never see each other's (or the user's) preferences.
+            setenv("HOME", fs::path(log_path).parent_path().c_str(), 1);
             for (const auto& [k, v] : env) setenv(k.c_str(), v.c_str(), 1);
             std::vector<char*> args;
             for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
@@ -264,6 +267,10 @@ struct Ready {
     std::map<std::string, int> needs;                // the width each field's text takes
     std::map<std::string, std::string> labels;       // each field's label, as given to FLTK
     std::vector<std::string> panel;                  // the messages panel's lines
+    std::string camera;                              // "file camera [ ... ]" or "moved camera [ ... ]"
+    bool dimmed = false;                             // the image is shown dimmed under an error banner
+    std::vector<std::string> recent;                 // File > Open recent, most recent first
+    double exposure = 0;                             // of the image view, in stops
 };
 
 Ready read_ready(const std::string& path) {
@@ -291,6 +298,15 @@ Ready read_ready(const std::string& path) {
             if (ls >> word && std::getline(ls, label) && !label.empty()) r.labels[name] = label.substr(1);
         } else if (key == "panel") {
             r.panel.push_back(line.substr(std::min(line.size(), key.size() + 1)));
+        } else if (key == "camera") {
+            r.camera = line.substr(std::min(line.size(), key.size() + 1));
+        } else if (key == "dimmed") {
+            ls >> word;
+            r.dimmed = word == "1";
+        } else if (key == "exposure") {
+            ls >> r.exposure;
+        } else if (key == "recent") {
+            r.recent.push_back(line.substr(std::min(line.size(), key.size() + 1)));
         }
     }
     return r;
@@ -416,14 +432,15 @@ TEST_F(ViewerE2E, ASceneWithErrorsIsReportedNotACrash) {
     Ready r = read_ready(ready);
     EXPECT_EQ(r.state, "failed");
     ASSERT_EQ(r.panel.size(), 1u) << output;
+    // In the window, the path is relative to the scene's folder; on stderr, as given.
     const std::string& error = r.panel[0];
-    ASSERT_EQ(error.rfind(scene_ + ":2:", 0), 0u) << error;
+    ASSERT_EQ(error.rfind("scene.sc:2:", 0), 0u) << error;
     // After "FILE:2:": the column's digits, then the message.
-    const std::string rest = error.substr(scene_.size() + 3);
+    const std::string rest = error.substr(std::string("scene.sc:2:").size());
     const std::size_t digits = rest.find_first_not_of("0123456789");
     EXPECT_GT(digits, 0u) << error;
     EXPECT_EQ(rest.substr(digits).rfind(": error: unknown object type 'blob'", 0), 0u) << error;
-    EXPECT_NE(output.find(error + "\n"), std::string::npos) << "the panel and stderr differ:\n" << output;
+    EXPECT_NE(output.find(dir_ + "/" + error + "\n"), std::string::npos) << "the panel and stderr differ:\n" << output;
     EXPECT_EQ(drawn_text(r.labels["message"]), " " + error);
     EXPECT_EQ(drawn_text(r.labels["progress"]), " the scene has errors");
 }
@@ -820,7 +837,7 @@ TEST_F(ViewerOnScreen, NamesWithAnAtSignShowAsWritten) {
     ASSERT_TRUE(wait_for_ready(*viewer, ready_, r, [](const Ready& n) { return n.state == "finished"; }))
         << viewer->output();
     EXPECT_EQ(drawn_text(r.labels["scene"]).rfind(" a@b.sc: 1 objects", 0), 0u) << r.labels["scene"];
-    const std::string warning = scene_ + ":4:";
+    const std::string warning = "a@b.sc:4:";  // relative to the scene's folder
     const std::string texture = "warning: texture 't@x.png': not found (drawn as a checkerboard)";
     const std::string message = drawn_text(r.labels["message"]);
     EXPECT_EQ(message.rfind(" " + warning, 0), 0u) << r.labels["message"];
@@ -950,7 +967,7 @@ TEST_F(ViewerOnScreen, CancellingTheMissingTextureDialogDrawsACheckerboard) {
 
     // The messages panel and the status bar name the texture.
     ASSERT_FALSE(r.panel.empty());
-    EXPECT_EQ(r.panel[0].rfind(scene_ + ":4:", 0), 0u) << r.panel[0];
+    EXPECT_EQ(r.panel[0].rfind("scene.sc:4:", 0), 0u) << r.panel[0];
     EXPECT_NE(r.panel[0].find("warning: texture 'nowhere.png': not found (drawn as a checkerboard)"),
               std::string::npos)
         << r.panel[0];
@@ -963,6 +980,264 @@ TEST_F(ViewerOnScreen, CancellingTheMissingTextureDialogDrawsACheckerboard) {
     xdotool(x_.display(), "windowfocus --sync " + main_window[0] + " key ctrl+q");
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
     EXPECT_EQ(processes_left(), std::vector<pid_t>{});
+}
+
+// ---------------------------------------------------------------------------------------------
+// The workbench (issue 12): the camera moved on the image, back home, into the file; the error
+// loop; what is remembered between runs.
+
+Image crop(const Image& screen, const Box& b) {
+    Image out(b.w, b.h);
+    for (int y = 0; y < b.h; ++y)
+        for (int x = 0; x < b.w; ++x) {
+            const glm::u8vec3 c = screen.at(b.x + x, b.y + y);
+            std::uint8_t* p = &out.rgb[(std::size_t(y) * b.w + x) * 3];
+            p[0] = c.x, p[1] = c.y, p[2] = c.z;
+        }
+    return out;
+}
+
+class ViewerWorkbench : public ViewerOnScreen {
+protected:
+    void SetUp() override {
+        ViewerOnScreen::SetUp();
+        WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xdotool"}));
+    }
+    // A real left drag with the mouse from the image's centre, `dx` pixels to the right.
+    void drag(const Ready& r, int dx) {
+        const int cx = r.image.x + r.image.w / 2, cy = r.image.y + r.image.h / 2;
+        std::string moves;
+        for (int step = 1; step <= 4; ++step) moves += " mousemove " + std::to_string(cx + dx * step / 4) + " " + std::to_string(cy) + " sleep 0.05";
+        xdotool(x_.display(), "mousemove " + std::to_string(cx) + " " + std::to_string(cy) + " mousedown 1" + moves +
+                                  " mouseup 1");
+    }
+    void keys(const std::string& k) {
+        const std::string window = xdotool(x_.display(), "search --name whitted-view");
+        xdotool(x_.display(), "windowfocus --sync " + window + " key " + k);
+    }
+    static constexpr const char* kShapes = R"(camera [ eye 0 1 6 focus 0 0 0 angle 40 ]
+light [ position 3 4 5 color 1 1 1 ]
+background [ color 0.1 0.15 0.3 ]
+mastersubgraph root [
+  trans [ translate -1.2 0 0  object sphere [ diffuse 0.9 0.2 0.1 specular 0.5 0.5 0.5 shine 30 ] ]
+  trans [ translate 1.2 0 0 rotate 0 1 0 30 object cube [ diffuse 0.2 0.7 0.3 ] ]
+  trans [ translate 0 -1 0 scale 8 0.1 8 object cube [ diffuse 0.6 0.6 0.6 ] ]
+]
+)";
+};
+
+TEST_F(ViewerWorkbench, ADragMovesTheCameraAndHomeRestoresTheFilesImageByteForByte) {
+    std::ofstream(scene_) << kShapes;
+    const Image file_image = cli_image(scene_, kW, kH, dir_ + "/file.png");
+    auto viewer = start_viewer({});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    ASSERT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen1.png"), file_image, first.image));
+    EXPECT_EQ(first.camera.rfind("file camera [ eye 0 1 6 focus 0 0 0 ", 0), 0u) << first.camera;
+
+    drag(first, 60);  // 15 degrees of orbit
+    Ready moved;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, moved, [&](const Ready& n) {
+        return n.job > first.job && n.state == "finished" && n.camera.rfind("moved ", 0) == 0;
+    })) << viewer->output();
+    EXPECT_TRUE(moved.reused) << "moving the camera must not load the scene again";
+    const Image after_drag = crop(grab_screen(x_.display(), dir_ + "/screen2.png"), moved.image);
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < after_drag.rgb.size(); ++i) differ += after_drag.rgb[i] != file_image.rgb[i];
+    EXPECT_GT(differ, after_drag.rgb.size() / 20) << "the image did not change (see " << dir_ << "/screen2.png)";
+
+    keys("Home");
+    Ready home;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, home, [&](const Ready& n) {
+        return n.job > moved.job && n.state == "finished" && n.camera.rfind("file ", 0) == 0;
+    })) << viewer->output();
+    EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/screen3.png"), file_image, home.image))
+        << "Home must give the file's image byte for byte (see " << dir_ << "/screen3.png)";
+    viewer->signal(SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
+TEST_F(ViewerWorkbench, SaveCameraIntoSceneKeepsEveryOtherByteAndTheImageOnScreen) {
+    const std::string head = "# my scene\n";
+    const std::string old_block = "camera [ eye 0 1 6 focus 0 0 0 angle 40 ]";
+    const std::string tail = std::string("   # the camera\n") + (std::strchr(kShapes, '\n') + 1);
+    std::ofstream(scene_) << head + old_block + tail;
+    auto viewer = start_viewer({});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    drag(first, -80);
+    Ready moved;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, moved, [&](const Ready& n) {
+        return n.job > first.job && n.state == "finished" && n.camera.rfind("moved ", 0) == 0;
+    })) << viewer->output();
+    const Image on_screen = crop(grab_screen(x_.display(), dir_ + "/moved.png"), moved.image);
+
+    keys("ctrl+shift+s");
+    const std::string dialog = wait_for_window(x_.display(), "^Save camera into scene$", 30s);
+    ASSERT_FALSE(dialog.empty()) << "no confirmation was asked:\n" << viewer->output();
+    xdotool(x_.display(), "windowfocus --sync " + dialog + " key Return");
+    Ready saved;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, saved, [&](const Ready& n) {
+        return n.job > moved.job && n.state == "finished" && n.camera.rfind("file ", 0) == 0;
+    })) << viewer->output();
+
+    // The file: the same bytes around a new camera block, which is the one the window had.
+    std::ifstream in(scene_);
+    const std::string text{std::istreambuf_iterator<char>(in), {}};
+    ASSERT_EQ(text.rfind(head, 0), 0u) << text;
+    ASSERT_GE(text.size(), head.size() + tail.size());
+    EXPECT_EQ(text.substr(text.size() - tail.size()), tail) << text;
+    const std::string block = text.substr(head.size(), text.size() - head.size() - tail.size());
+    EXPECT_NE(block, old_block);
+    EXPECT_EQ("moved " + block, moved.camera);
+    // Loaded again: the window shows the image it showed before saving, and so does the renderer.
+    EXPECT_FALSE(saved.reused);
+    EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/saved.png"), on_screen, saved.image))
+        << "see " << dir_ << "/moved.png and saved.png";
+    EXPECT_EQ(cli_image(scene_, kW, kH, dir_ + "/saved_cli.png").rgb, on_screen.rgb);
+    viewer->signal(SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
+TEST_F(ViewerWorkbench, ABrokenSceneKeepsTheLastImageDimmedUnderTheErrorUntilFixed) {
+    auto viewer = start_viewer({"--watch"});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    ASSERT_TRUE(shows(grab_screen(x_.display(), dir_ + "/red.png"), red_, first.image));
+
+    rewrite_scene(scene_, "camera [ eye 0 0 5 ]\nmastersubgraph root [ trans [ object blob [ ] ] ]\n");
+    Ready broken;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, broken,
+                               [&](const Ready& n) { return n.job > first.job && n.state == "failed"; }, 30s))
+        << viewer->output();
+    EXPECT_TRUE(broken.dimmed);
+    ASSERT_FALSE(broken.panel.empty());
+    EXPECT_EQ(broken.panel[0].rfind("scene.sc:2:", 0), 0u) << broken.panel[0];
+    const Image screen = grab_screen(x_.display(), dir_ + "/broken.png");
+    // Below the banner (two lines of text at the top), the red image at 2/5 of its brightness.
+    ASSERT_EQ(broken.image.w, kW);
+    int wrong = 0;
+    for (int y = kH - 40; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const glm::ivec3 want = glm::ivec3(red_.at(x, y)) * 2 / 5;
+            wrong += glm::ivec3(screen.at(broken.image.x + x, broken.image.y + y)) != want;
+        }
+    EXPECT_EQ(wrong, 0) << "see " << dir_ << "/broken.png";
+    EXPECT_EQ(glm::ivec3(screen.at(broken.area.x + 2, broken.area.y + 2)), glm::ivec3(70, 20, 20))
+        << "no error banner at the top of the image area (see " << dir_ << "/broken.png)";
+
+    rewrite_scene(scene_, sphere_scene("0.1 0.1 0.9"));
+    Ready fixed;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, fixed,
+                               [&](const Ready& n) { return n.job > broken.job && n.state == "finished"; }, 30s))
+        << viewer->output();
+    EXPECT_FALSE(fixed.dimmed);
+    EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/blue.png"), blue_, fixed.image));
+    viewer->signal(SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
+TEST_F(ViewerWorkbench, RecentFilesAndTheWindowSizeSurviveARestart) {
+    // HOME is the test's folder (Child): the preferences start empty and stay there.
+    {
+        auto viewer = start_viewer({});
+        Ready r;
+        ASSERT_TRUE(wait_for_ready(*viewer, ready_, r, [](const Ready& n) { return n.state == "finished"; }))
+            << viewer->output();
+        EXPECT_EQ(r.window.w, 1000);  // the default, nothing remembered yet
+        const std::string window = xdotool(x_.display(), "search --name whitted-view");
+        xdotool(x_.display(), "windowsize " + window + " 720 520");
+        ASSERT_TRUE(wait_for_ready(*viewer, ready_, r, [](const Ready& n) { return n.window.w == 720; }, 20s))
+            << viewer->output();
+        keys("ctrl+q");
+        ASSERT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+    }
+    EXPECT_TRUE(fs::exists(dir_ + "/.fltk/whitted/whitted-view.prefs"));
+    fs::remove(ready_);
+    const std::string first_scene = scene_;
+    scene_ = dir_ + "/blue.sc";
+    auto viewer = start_viewer({});
+    Ready r;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, r, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    EXPECT_EQ(r.window.w, 720);
+    EXPECT_EQ(r.window.h, 520);
+    EXPECT_EQ(r.recent, (std::vector<std::string>{scene_, first_scene}));
+    viewer->signal(SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
+// Zoom with '+' (2x, nearest neighbour: each image pixel a 2 x 2 block) and exposure with ']'
+// (one stop: each byte doubled, clamped), about the centre of the area.
+TEST_F(ViewerWorkbench, ZoomShowsPixelsAsBlocksAndExposureDoublesTheBytes) {
+    auto viewer = start_viewer({});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    keys("plus");
+    Ready zoomed;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, zoomed, [](const Ready& n) { return n.image.w == 2 * kW; }, 20s))
+        << viewer->output();
+    ASSERT_EQ(zoomed.image.h, 2 * kH);
+    const Image screen = grab_screen(x_.display(), dir_ + "/zoomed.png");
+    int wrong = 0;
+    for (int y = 0; y < 2 * kH; ++y)
+        for (int x = 0; x < 2 * kW; ++x)
+            wrong += screen.at(zoomed.image.x + x, zoomed.image.y + y) != red_.at(x / 2, y / 2);
+    EXPECT_EQ(wrong, 0) << "see " << dir_ << "/zoomed.png";
+
+    keys("1 bracketright");
+    Ready exposed;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, exposed,
+                               [](const Ready& n) { return n.image.w == kW && n.exposure == 1.0; }, 20s))
+        << viewer->output();
+    const Image bright = grab_screen(x_.display(), dir_ + "/exposed.png");
+    wrong = 0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const glm::ivec3 want = glm::min(glm::ivec3(red_.at(x, y)) * 2, glm::ivec3(255));
+            wrong += glm::ivec3(bright.at(exposed.image.x + x, exposed.image.y + y)) != want;
+        }
+    EXPECT_EQ(wrong, 0) << "see " << dir_ << "/exposed.png";
+    viewer->signal(SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
+// --watch also reloads when a texture file of the scene changes (not only the scene file).
+TEST_F(ViewerWorkbench, WatchReloadsWhenATextureChanges) {
+    Image tex(4, 4);
+    std::fill(tex.rgb.begin(), tex.rgb.end(), std::uint8_t(200));
+    ASSERT_EQ(write_image(tex, dir_ + "/tex.png"), "");
+    std::ofstream(scene_, std::ios::trunc) << sphere_scene("1 1 1", "tex.png");
+    auto viewer = start_viewer({"--watch"});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    const auto before = fs::last_write_time(dir_ + "/tex.png");
+    std::fill(tex.rgb.begin(), tex.rgb.end(), std::uint8_t(40));
+    ASSERT_EQ(write_image(tex, dir_ + "/tex.png"), "");
+    fs::last_write_time(dir_ + "/tex.png", before + 2s);
+    Ready again;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, again,
+                               [&](const Ready& n) { return n.job > first.job && n.state == "finished"; }, 30s))
+        << "the changed texture was not loaded again:\n" << viewer->output();
+    EXPECT_FALSE(again.reused);
+    viewer->signal(SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
+TEST_F(ViewerWorkbench, F1OpensTheKeyboardShortcutsWindow) {
+    auto viewer = start_viewer({});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    keys("F1");
+    EXPECT_FALSE(wait_for_window(x_.display(), "^Keyboard shortcuts$", 20s).empty()) << viewer->output();
+    viewer->signal(SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
 }  // namespace

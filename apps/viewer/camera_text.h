@@ -1,0 +1,41 @@
+#pragma once
+// The camera back into the scene text: a `camera [ … ]` block for the clipboard, and the scene file
+// with its camera block replaced (every other byte kept). Display-free and unit-tested.
+#include <string>
+#include <string_view>
+
+#include "scene/scene_description.h"
+
+namespace whitted::viewer {
+
+// The shortest decimal text that reads back (as the parser reads numbers: double, then float) as
+// exactly `value`.
+std::string format_number(float value);
+
+// `camera [ eye x y z focus x y z up x y z angle a ]`, with `near-far` when not the defaults, and
+// `aperture`/`focaldistance` for a lens (also for a pinhole when `state_pinhole`, to override what an
+// earlier block set). Read back, it gives the same camera, hence the same image.
+std::string camera_block(const CameraDesc& camera, bool state_pinhole = false);
+
+// Where the camera blocks are: byte offsets of the `camera` keyword and one past its closing `]`.
+struct BlockSpan {
+    std::size_t begin = 0, end = 0;
+};
+
+struct CameraReplacement {
+    std::string text;   // the new file contents (when error is empty)
+    std::string error;  // e.g. a camera block that is never closed
+    int blocks = 0;     // camera blocks found in the old text
+};
+
+// The scene text with its camera replaced by `camera`. Several camera blocks: the format merges them
+// keyword by keyword, later ones winning (scene-format.md §5), so the last block is replaced by a
+// complete one and the earlier ones are kept. No camera block: the new one goes at the top.
+CameraReplacement replace_camera_block(std::string_view text, const CameraDesc& camera);
+
+// Replaces the camera block of the scene file at `path`, atomically: the new text goes to a
+// temporary file in the same folder, which is renamed over the old one (keeping its permissions).
+// Returns "" or an error message; on error the file is untouched.
+std::string save_camera_into_file(const std::string& path, const CameraDesc& camera);
+
+}  // namespace whitted::viewer

@@ -1,0 +1,211 @@
+#include "image_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include <FL/Fl.H>
+#include <FL/fl_draw.H>
+
+namespace whitted::viewer {
+
+ImageView::ImageView(int x, int y, int w, int h) : Fl_Widget(x, y, w, h) {
+    box(FL_FLAT_BOX);
+    color(fl_rgb_color(48, 48, 48));
+    visible_focus(0);  // takes the keyboard (fly keys) without drawing a focus box
+    set_exposure(0.0f);
+}
+
+double ImageView::scale() const {
+    if (!fit_) return zoom_;
+    if (image.width <= 0 || image.height <= 0) return 1.0;
+    return std::clamp(std::min(double(w()) / image.width, double(h()) / image.height), 1.0 / 16, 16.0);
+}
+
+void ImageView::zoom_fit() {
+    fit_ = true;
+    pan_x_ = pan_y_ = 0;
+    redraw();
+}
+
+void ImageView::zoom_one() {
+    fit_ = false;
+    zoom_ = 1.0;
+    pan_x_ = pan_y_ = 0;
+    redraw();
+}
+
+void ImageView::zoom_by(int steps) {
+    const double before = scale();
+    const double after = std::clamp(std::exp2(std::round(std::log2(before)) + steps), 1.0 / 16, 16.0);
+    // The image point at the area's centre stays there.
+    pan_x_ *= after / before;
+    pan_y_ *= after / before;
+    fit_ = false;
+    zoom_ = after;
+    clamp_pan();
+    redraw();
+}
+
+void ImageView::set_exposure(float stops) {
+    exposure_ = std::clamp(stops, -10.0f, 10.0f);
+    const double k = std::exp2(double(exposure_));
+    for (int i = 0; i < 256; ++i) lut_[std::size_t(i)] = std::uint8_t(std::clamp(std::lround(i * k), 0L, 255L));
+    redraw();
+}
+
+// The image stays at least partly in view.
+void ImageView::clamp_pan() {
+    const double s = scale();
+    const double lim_x = (image.width * s + w()) / 2.0 - 16, lim_y = (image.height * s + h()) / 2.0 - 16;
+    pan_x_ = std::clamp(pan_x_, -std::max(0.0, lim_x), std::max(0.0, lim_x));
+    pan_y_ = std::clamp(pan_y_, -std::max(0.0, lim_y), std::max(0.0, lim_y));
+}
+
+// Centred (whole pixels, as before zooming existed: a 1:1 image is drawn byte for byte).
+int ImageView::image_x() const {
+    return x() + int(std::floor((w() - image.width * scale()) / 2.0 + pan_x_));
+}
+int ImageView::image_y() const {
+    return y() + int(std::floor((h() - image.height * scale()) / 2.0 + pan_y_));
+}
+
+bool ImageView::to_image(int wx, int wy, int& ix, int& iy) const {
+    const double s = scale();
+    ix = int(std::floor((wx - image_x()) / s));
+    iy = int(std::floor((wy - image_y()) / s));
+    return image.width > 0 && ix >= 0 && iy >= 0 && ix < image.width && iy < image.height;
+}
+
+void ImageView::resize(int X, int Y, int W, int H) {
+    Fl_Widget::resize(X, Y, W, H);
+    clamp_pan();
+}
+
+void ImageView::draw() {
+    fl_push_clip(x(), y(), w(), h());
+    fl_color(color());
+    fl_rectf(x(), y(), w(), h());
+    const bool have_image = image.width > 0 && image.height > 0;
+    if (have_image) {
+        // The visible part of the image, in window coordinates; each screen pixel shows the image
+        // pixel under its top-left corner (nearest neighbour), dimmed or exposed through the table.
+        const double s = scale();
+        const int ix = image_x(), iy = image_y();
+        const int x0 = std::max(x(), ix), y0 = std::max(y(), iy);
+        const int x1 = std::min(x() + w(), ix + int(std::ceil(image.width * s)));
+        const int y1 = std::min(y() + h(), iy + int(std::ceil(image.height * s)));
+        if (x1 > x0 && y1 > y0) {
+            const int bw = x1 - x0, bh = y1 - y0;
+            buffer_.resize(std::size_t(bw) * bh * 3);
+            std::array<std::uint8_t, 256> lut = lut_;
+            if (dimmed)
+                for (auto& v : lut) v = std::uint8_t(v * 2 / 5);
+            std::vector<int> src_x(std::size_t(bw), 0);
+            for (int sx = 0; sx < bw; ++sx)
+                src_x[std::size_t(sx)] = std::min(image.width - 1, int(std::floor((x0 + sx - ix) / s)));
+            for (int sy = 0; sy < bh; ++sy) {
+                const int row = std::min(image.height - 1, int(std::floor((y0 + sy - iy) / s)));
+                const std::uint8_t* src = &image.rgb[std::size_t(row) * image.width * 3];
+                std::uint8_t* dst = &buffer_[std::size_t(sy) * bw * 3];
+                for (int sx = 0; sx < bw; ++sx) {
+                    const std::uint8_t* p = src + std::size_t(src_x[std::size_t(sx)]) * 3;
+                    dst[sx * 3] = lut[p[0]];
+                    dst[sx * 3 + 1] = lut[p[1]];
+                    dst[sx * 3 + 2] = lut[p[2]];
+                }
+            }
+            fl_draw_image(buffer_.data(), x0, y0, bw, bh, 3, 0);
+        }
+    }
+    if (!overlay.empty()) {
+        // A banner at the top of the area: the image (if any) stays visible, dimmed, below it.
+        fl_font(FL_HELVETICA, 14);
+        const int line = fl_height() + 4;
+        const int banner_h = std::min(h(), 12 + line * int(overlay.size()));
+        if (have_image) {
+            fl_color(fl_rgb_color(70, 20, 20));
+            fl_rectf(x(), y(), w(), banner_h);
+        }
+        const int top = y() + 6 + fl_height() - fl_descent();
+        for (std::size_t i = 0; i < overlay.size(); ++i) {
+            fl_color(i == 0 ? FL_WHITE : fl_rgb_color(255, 140, 120));
+            fl_draw(overlay[i].c_str(), x() + 12, top + int(i) * line);
+        }
+    }
+    fl_pop_clip();
+}
+
+int ImageView::handle(int event) {
+    switch (event) {
+        case FL_FOCUS:
+        case FL_UNFOCUS:
+            return 1;
+        case FL_ENTER:
+            return 1;  // to get FL_MOVE
+        case FL_LEAVE:
+            if (on_hover) on_hover(-1, -1);
+            return 1;
+        case FL_MOVE: {
+            int ix = -1, iy = -1;
+            const bool on = to_image(Fl::event_x(), Fl::event_y(), ix, iy);
+            if (on_hover) on ? on_hover(ix, iy) : on_hover(-1, -1);
+            if (on && (Fl::event_state() & FL_SHIFT) && on_inspect) on_inspect(ix, iy);
+            return 1;
+        }
+        case FL_PUSH:
+            if (Fl::focus() != this) take_focus();
+            button_ = Fl::event_button();
+            press_x_ = Fl::event_x();
+            press_y_ = Fl::event_y();
+            shift_at_press_ = Fl::event_state() & FL_SHIFT;
+            dragging_ = false;
+            pan_at_press_x_ = pan_x_;
+            pan_at_press_y_ = pan_y_;
+            return 1;
+        case FL_DRAG: {
+            const int dx = Fl::event_x() - press_x_, dy = Fl::event_y() - press_y_;
+            if (!dragging_ && std::abs(dx) < kClickSlop && std::abs(dy) < kClickSlop) return 1;
+            dragging_ = true;
+            if (button_ == FL_RIGHT_MOUSE) {  // moves the picture, not the camera
+                pan_x_ = pan_at_press_x_ + dx;
+                pan_y_ = pan_at_press_y_ + dy;
+                clamp_pan();
+                redraw();
+            } else if (on_camera_drag) {
+                const bool pan = button_ == FL_MIDDLE_MOUSE || (button_ == FL_LEFT_MOUSE && shift_at_press_);
+                on_camera_drag(pan ? Drag::Pan : Drag::Orbit, dx, dy, false);
+            }
+            int ix = -1, iy = -1;
+            if (on_hover) to_image(Fl::event_x(), Fl::event_y(), ix, iy) ? on_hover(ix, iy) : on_hover(-1, -1);
+            return 1;
+        }
+        case FL_RELEASE: {
+            const int dx = Fl::event_x() - press_x_, dy = Fl::event_y() - press_y_;
+            if (dragging_) {
+                if (button_ != FL_RIGHT_MOUSE && on_camera_drag) {
+                    const bool pan = button_ == FL_MIDDLE_MOUSE || (button_ == FL_LEFT_MOUSE && shift_at_press_);
+                    on_camera_drag(pan ? Drag::Pan : Drag::Orbit, dx, dy, true);
+                }
+            } else if (button_ == FL_LEFT_MOUSE) {
+                int ix = -1, iy = -1;
+                if (to_image(press_x_, press_y_, ix, iy) && on_inspect) on_inspect(ix, iy);
+            }
+            dragging_ = false;
+            button_ = 0;
+            return 1;
+        }
+        case FL_MOUSEWHEEL: {
+            const int dy = Fl::event_dy();
+            if (dy == 0 || !on_wheel) return 0;
+            on_wheel(-dy, (Fl::event_state() & FL_CTRL) != 0);
+            return 1;
+        }
+        case FL_KEYBOARD:
+            return on_key && on_key(Fl::event_key()) ? 1 : 0;
+        default:
+            return Fl_Widget::handle(event);
+    }
+}
+
+}  // namespace whitted::viewer

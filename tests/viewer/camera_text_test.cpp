@@ -1,0 +1,168 @@
+// The camera written back into scene text: numbers that read back exactly, and the camera block
+// replaced with every other byte kept. Checked against the real parser.
+#if __has_include("camera_text.h")  // built only with the viewer (WHITTED_BUILD_VIEWER=ON)
+#include "camera_text.h"
+
+#include <sys/stat.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "flatten/flatten.h"
+#include "parse/number.h"
+#include "parse/parser.h"
+#include "support/run_process.h"
+
+namespace whitted::viewer {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kRest = "mastersubgraph root [ trans [ object sphere [ diffuse 1 0 0 ] ] ]\n";
+
+CameraDesc parsed_camera(const std::string& text) {
+    ParseResult r = parse_scene_text(text, "t.sc");
+    EXPECT_TRUE(r.ok()) << text << (r.diagnostics.empty() ? "" : r.diagnostics[0].str());
+    return r.scene.camera;
+}
+
+void expect_same_camera(const CameraDesc& a, const CameraDesc& b) {
+    const Camera ca = make_camera(a), cb = make_camera(b);
+    EXPECT_EQ(ca.eye, cb.eye);
+    EXPECT_EQ(ca.forward, cb.forward);
+    EXPECT_EQ(ca.right, cb.right);
+    EXPECT_EQ(ca.up, cb.up);
+    EXPECT_EQ(ca.tan_half_fov, cb.tan_half_fov);
+    EXPECT_EQ(ca.lens_radius, cb.lens_radius);
+    EXPECT_EQ(ca.focal_distance, cb.focal_distance);
+}
+
+CameraDesc odd_camera() {
+    CameraDesc c;
+    c.eye = {0.1f, -1.0f / 3.0f, 12345.678f};
+    c.focus = {1e-7f, 2.5f, -0.3f};
+    c.use_focus = true;
+    c.up = {0.01f, 1, 0.2f};
+    c.angle_deg = 37.123456f;
+    return c;
+}
+
+TEST(CameraText, NumbersReadBackExactlyAsTheParserReadsThem) {
+    std::mt19937 rng(12);
+    std::uniform_int_distribution<std::uint32_t> bits;
+    int checked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        float v;
+        const std::uint32_t b = bits(rng);
+        std::memcpy(&v, &b, sizeof v);
+        if (!std::isfinite(v)) continue;
+        const std::string s = format_number(v);
+        const NumberParse p = parse_number(s);
+        ASSERT_EQ(p.status, NumberStatus::Ok) << s;
+        ASSERT_EQ(p.value, v == 0.0f ? 0.0f : v) << s;  // -0 is written 0
+        ++checked;
+    }
+    EXPECT_GT(checked, 19000);
+    EXPECT_EQ(format_number(0.1f), "0.1");
+    EXPECT_EQ(format_number(-2.0f), "-2");
+    EXPECT_EQ(format_number(-0.0f), "0");
+}
+
+TEST(CameraText, TheBlockReadsBackAsTheSameCamera) {
+    CameraDesc c = odd_camera();
+    const std::string block = camera_block(c);
+    EXPECT_EQ(block.rfind("camera [ eye ", 0), 0u) << block;
+    EXPECT_EQ(block.find("aperture"), std::string::npos) << block;
+    expect_same_camera(parsed_camera(block + "\n" + kRest), c);
+
+    c.aperture = 0.25f;  // a lens: its distance in focus is stated
+    const std::string lens = camera_block(c);
+    EXPECT_NE(lens.find("aperture 0.25 focaldistance "), std::string::npos) << lens;
+    expect_same_camera(parsed_camera(lens + "\n" + kRest), c);
+}
+
+TEST(CameraText, OnlyTheCameraBlockIsReplacedWhateverTheSpacingAndComments) {
+    const std::string before = "# a scene\n# camera [ eye 9 9 9 ]  (a comment, not a block)\n\tlight[position 1 2 3]\n";
+    const std::string old_block = "camera[eye 0 0 5  # the eye\n   focus 0 0 0\tangle 40]";
+    const std::string after =
+        "\r\nmastersubgraph camera [ trans [ object cube [ texture camera 0 0 ] ] ]\n"
+        "mastersubgraph root [ trans [ subgraph camera ] ]\n";
+    const CameraDesc c = odd_camera();
+    const CameraReplacement r = replace_camera_block(before + old_block + after, c);
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(r.blocks, 1);
+    EXPECT_EQ(r.text, before + camera_block(c) + after);
+}
+
+TEST(CameraText, ABlockWithoutItsOpeningBracketIsFound) {
+    const std::string text = std::string("camera eye 0 0 5 focus 0 0 0 ]\n") + kRest;
+    const CameraReplacement r = replace_camera_block(text, odd_camera());
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(r.text, camera_block(odd_camera()) + "\n" + kRest);
+}
+
+TEST(CameraText, WithSeveralBlocksTheLastIsReplacedAndTheResultIsTheNewCamera) {
+    // §5: blocks merge keyword by keyword, later ones winning; the first sets a lens.
+    const std::string first = "camera [ eye 1 1 1 aperture 0.5 focaldistance 3 near-far 1 50 ]\n";
+    const std::string middle = std::string("light [ position 0 5 0 ]\n");
+    const std::string text = first + middle + "camera [ angle 30 ]\n" + kRest;
+    const CameraDesc c = odd_camera();
+    const CameraReplacement r = replace_camera_block(text, c);
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(r.blocks, 2);
+    EXPECT_EQ(r.text.substr(0, first.size() + middle.size()), first + middle);  // the first block kept
+    EXPECT_NE(r.text.find("aperture 0 focaldistance "), std::string::npos)
+        << "the earlier lens must be overridden: " << r.text;
+    expect_same_camera(parsed_camera(r.text), c);
+}
+
+TEST(CameraText, AFileWithoutACameraGetsOneAtTheTop) {
+    const CameraReplacement r = replace_camera_block(kRest, odd_camera());
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(r.blocks, 0);
+    EXPECT_EQ(r.text, camera_block(odd_camera()) + "\n" + kRest);
+    expect_same_camera(parsed_camera(r.text), odd_camera());
+}
+
+TEST(CameraText, AnUnclosedCameraBlockIsAnErrorNotAGuess) {
+    const CameraReplacement r = replace_camera_block("camera [ eye 0 0 5\n", odd_camera());
+    EXPECT_NE(r.error, "");
+}
+
+TEST(CameraText, SavingReplacesTheBlockAtomicallyAndKeepsThePermissions) {
+    const std::string dir = test::make_temp_dir();
+    const std::string path = dir + "/s.sc";
+    const std::string text = std::string("# mine\ncamera [ eye 0 0 5 ]\n") + kRest;
+    std::ofstream(path) << text;
+    ASSERT_EQ(chmod(path.c_str(), 0640), 0);
+    EXPECT_EQ(save_camera_into_file(path, odd_camera()), "");
+    std::ifstream in(path);
+    std::stringstream got;
+    got << in.rdbuf();
+    EXPECT_EQ(got.str(), "# mine\n" + camera_block(odd_camera()) + "\n" + kRest);
+    struct stat st{};
+    ASSERT_EQ(stat(path.c_str(), &st), 0);
+    EXPECT_EQ(st.st_mode & 0777, 0640u);
+    int files = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++files;
+    EXPECT_EQ(files, 1) << "no temporary file is left behind";
+
+    // A file it cannot make sense of is left as it was.
+    const std::string bad = "camera [ eye 0 0 5\n";
+    std::ofstream(path, std::ios::trunc) << bad;
+    EXPECT_NE(save_camera_into_file(path, odd_camera()), "");
+    std::ifstream again(path);
+    std::stringstream kept;
+    kept << again.rdbuf();
+    EXPECT_EQ(kept.str(), bad);
+    EXPECT_NE(save_camera_into_file(dir + "/missing.sc", odd_camera()), "");
+}
+
+}  // namespace
+}  // namespace whitted::viewer
+#endif
