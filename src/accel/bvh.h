@@ -38,8 +38,9 @@ struct Bvh {
 
 // Builds the hierarchy and reorders `instances` to match it, on `threads` threads (0 = all
 // hardware threads; the tree is the same for any count). Throws std::length_error beyond
-// Bvh4Node::kMaxInstances instances.
-Bvh build_bvh(std::vector<Instance>& instances, int threads = 0);
+// Bvh4Node::kMaxInstances instances. With `leaf_order`: the instance now at place i was at
+// (*leaf_order)[i] (for side tables that follow the instances).
+Bvh build_bvh(std::vector<Instance>& instances, int threads = 0, std::vector<std::uint32_t>* leaf_order = nullptr);
 
 struct Hit {
     float t;

@@ -320,7 +320,7 @@ std::uint32_t collapse(const std::vector<BinNode>& bin, std::uint32_t root, std:
 
 }  // namespace
 
-Bvh build_bvh(std::vector<Instance>& instances, int threads_asked) {
+Bvh build_bvh(std::vector<Instance>& instances, int threads_asked, std::vector<std::uint32_t>* leaf_order) {
     const int threads = build_threads(threads_asked);
     Bvh bvh;
     const std::size_t n = instances.size();
@@ -348,6 +348,7 @@ Bvh build_bvh(std::vector<Instance>& instances, int threads_asked) {
         collapse(bin, 0, bvh.nodes);
     }
 
+    if (leaf_order) *leaf_order = source;
     // Reorder the instances to leaf order in place, following the permutation's cycles.
     for (std::uint32_t i = 0; i < n; ++i) {
         if (source[i] == i) continue;

@@ -149,7 +149,11 @@ FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances) {
     scene.background = desc.background;
     scene.ambient_intensity = desc.ambient_intensity;
     scene.camera = make_camera(desc.camera);
-    for (const LightDesc& l : desc.lights) scene.lights.push_back(to_light(l));
+    Provenance& prov = scene.provenance;
+    for (const LightDesc& l : desc.lights) {
+        scene.lights.push_back(to_light(l));
+        prov.add_light(l.loc);
+    }
     if (desc.root < 0) {
         Diagnostic d;
         d.loc.file = desc.path;
@@ -177,6 +181,7 @@ FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances) {
         if (inserted) {
             scene.materials.push_back(to_material(o.material));
             result.material_sources.push_back(&o);
+            prov.add_material(o.loc, o.material.texture ? o.material.texture->file : std::string());
         }
         return it->second;
     };
@@ -184,11 +189,16 @@ FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances) {
     // Depth-first walk with an explicit stack: a long chain of subgraphs must not overflow
     // the call stack. world = M(root's trans) · … · M(leaf trans) (spec §3).
     // Composed in double, so that long chains lose no precision before the single rounding.
+    // Each frame also carries its provenance link (the subgraph's `mastersubgraph` line, below
+    // the `subgraph` line that used it), the parent of its trans blocks' links.
     struct Frame {
         int subgraph;
         glm::dmat4 parent;
+        std::uint32_t link;
     };
-    std::vector<Frame> stack{{desc.root, glm::dmat4(1.0)}};
+    const SubgraphDesc& root = desc.subgraphs[desc.root];
+    std::vector<Frame> stack{
+        {desc.root, glm::dmat4(1.0), prov.add_link(Provenance::kNone, LinkKind::Mastersubgraph, root.name, root.loc)}};
     while (!stack.empty()) {
         Frame f = stack.back();
         stack.pop_back();
@@ -200,10 +210,17 @@ FlattenResult flatten(const SceneDescription& desc, std::size_t max_instances) {
                     return result;
                 }
             }
-            for (const ObjectDesc& o : t.objects)
+            const std::uint32_t trans_link = prov.add_link(f.link, LinkKind::Trans, "", t.loc);
+            for (const ObjectDesc& o : t.objects) {
                 scene.instances.push_back(make_instance(world, o.kind, material_index(o)));
+                prov.add_instance(trans_link);
+            }
             for (const SubgraphRef& ref : t.subgraphs) {
-                if (int child = find_subgraph(index, ref.name); child >= 0) stack.push_back({child, world});
+                if (int child = find_subgraph(index, ref.name); child >= 0) {
+                    const SubgraphDesc& sg = desc.subgraphs[child];
+                    const std::uint32_t use = prov.add_link(trans_link, LinkKind::Subgraph, ref.name, ref.loc);
+                    stack.push_back({child, world, prov.add_link(use, LinkKind::Mastersubgraph, sg.name, sg.loc)});
+                }
             }
         }
     }
