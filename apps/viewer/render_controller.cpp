@@ -205,6 +205,9 @@ void RenderController::run(std::shared_ptr<Job> job) {
         status_.samples_total = passes.back();
         status_.passes_total = int(passes.size());
         image_ = Image(s.width, s.height);
+        shown_ = Shown{scene, s, job->path};
+        shown_.settings.cancel = nullptr;
+        shown_.settings.on_tile = nullptr;
         ++image_version_;
         changed_.notify_all();
     }
@@ -266,6 +269,11 @@ bool RenderController::copy_image_if_changed(Image& out, std::uint64_t& version)
 Image RenderController::image() const {
     std::lock_guard lock(mutex_);
     return image_;
+}
+
+RenderController::Shown RenderController::shown() const {
+    std::lock_guard lock(mutex_);
+    return shown_;
 }
 
 bool RenderController::wait(std::chrono::milliseconds timeout) const {

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <thread>
 
 #include <FL/fl_ask.H>
@@ -26,6 +27,7 @@
 #include <FL/x.H>
 
 #include "film/image_io.h"
+#include "inspector_window.h"  // [inspector]
 
 namespace whitted::viewer {
 namespace {
@@ -118,6 +120,21 @@ public:
 
     Image image;
     std::vector<std::string> overlay;  // lines drawn over a blank area instead of the image
+    // [inspector] Called with an image pixel on a left click without drag, and on Shift+hover.
+    std::function<void(int, int)> on_inspect;
+    int handle(int event) override {  // [inspector]
+        const bool shift_hover = event == FL_MOVE && (Fl::event_state() & FL_SHIFT);
+        if (event == FL_PUSH && Fl::event_button() == FL_LEFT_MOUSE) press_x_ = Fl::event_x(), press_y_ = Fl::event_y();
+        const bool click = event == FL_RELEASE && Fl::event_button() == FL_LEFT_MOUSE &&
+                           std::abs(Fl::event_x() - press_x_) + std::abs(Fl::event_y() - press_y_) <= 3;
+        if ((click || shift_hover) && on_inspect && overlay.empty()) {
+            const int px = Fl::event_x() - image_x(), py = Fl::event_y() - image_y();
+            if (px >= 0 && py >= 0 && px < image.width && py < image.height) on_inspect(px, py);
+        }
+        return event == FL_PUSH || event == FL_RELEASE || event == FL_ENTER || event == FL_MOVE ? 1
+                                                                                                : Fl_Widget::handle(event);
+    }
+    int press_x_ = -1000, press_y_ = -1000;  // [inspector]
 
     // Top-left corner of the image, in window coordinates.
     int image_x() const { return x() + std::max(0, (w() - image.width) / 2); }
@@ -160,6 +177,7 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     menu_->add("&Render/&Render", FL_F + 5, [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->render(); }, this);
     menu_->add("&Render/&Stop", FL_Escape, [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->stop(); }, this);
     menu_->add("&Render/Scene &time...", FL_CTRL + 't', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->ask_time(); }, this);
+    menu_->add("&Render/&Inspect pixel...", FL_CTRL + 'i', [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->ask_inspect(); }, this);  // [inspector]
 
     // Tool bar: the render controls. Changing one and pressing Render uses it.
     // Made at their final sizes; layout() places them left to right.
@@ -226,6 +244,7 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     scroll_->box(FL_FLAT_BOX);
     scroll_->color(fl_rgb_color(48, 48, 48));
     view_ = new ImageView(0, kMenuH + kToolH, W, 100);
+    view_->on_inspect = [this](int px, int py) { inspect(px, py); };  // [inspector]
     scroll_->end();
 
     messages_ = new Fl_Browser(0, 0, W, kMessagesH);

@@ -2,6 +2,7 @@
 // The viewer's main window (FLTK 1.3). Everything here runs on the UI thread; rendering happens in
 // the RenderController's threads, which this window polls ten times a second.
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@ class Fl_Scroll;
 namespace whitted::viewer {
 
 class ImageView;
+class InspectorWindow;  // [inspector]
 
 struct ViewerOptions {
     std::string scene;                       // "" = start empty
@@ -49,6 +51,8 @@ public:
     void render(bool force_reload = false);
     void stop();
     void ask_time();  // Render ▸ Scene time: asks for t, then renders
+    void inspect(int x, int y);  // [inspector] shows the report of image pixel (x, y) (inspector_window.cpp)
+    void ask_inspect();          // [inspector] Render ▸ Inspect pixel: asks for X,Y
     void quit();
     int exit_code() const { return exit_code_; }
     bool quitting() const { return quitting_; }
@@ -118,6 +122,7 @@ private:
     bool quitting_ = false;
     std::string extra_message_;  // a message of the viewer's own (e.g. a failed save)
     int exit_code_ = 0;
+    std::unique_ptr<InspectorWindow> inspector_;  // [inspector] made on first use
 
     // Remembered for the session: texture name as written → file the user picked; scenes for
     // which the user declined to pick (rendered with the checkerboard from then on).
