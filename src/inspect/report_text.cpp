@@ -54,7 +54,7 @@ void write_secondary(std::ostream& out, const char* name, const SecondaryInfo& s
     using Outcome = SecondaryRecord::Outcome;
     out << name << ": ";
     switch (s.record.outcome) {
-        case Outcome::None:
+        case Outcome::NoRay:
             out << (r.depth_limit ? "none (max depth reached)" : "none") << "\n";
             return;
         case Outcome::TooWeak: out << "not traced: its weight " << paren(s.record.weight) << " is below 1/256\n"; return;

@@ -31,12 +31,12 @@ enum class SecondaryKind : unsigned char { Reflect, Refract };
 // A reflected or refracted ray leaving a hit.
 struct SecondaryRecord {
     enum class Outcome : unsigned char {
-        None,         // the material has no such ray (or the depth limit stopped it)
+        NoRay,        // the material has no such ray (or the depth limit stopped it)
         Traced,       // traced: `node` is its hit (-1: it left the scene, `color` is the background)
         TooWeak,      // its weight fell below 1/256 (scene-format.md §7): not traced
         OffSurface,   // a glossy direction drawn on the wrong side of the surface: carries nothing
     };
-    Outcome outcome = Outcome::None;
+    Outcome outcome = Outcome::NoRay;
     Ray ray{};
     glm::vec3 weight{0.0f};        // the path's weight after this ray
     glm::vec3 color{0.0f};         // what the ray brought back

@@ -220,7 +220,7 @@ TEST(PixelInspector, NamesWhatTheMirrorReflects) {
     ASSERT_TRUE(r.reflected.next);
     EXPECT_EQ(r.reflected.next->object.kind, ShapeKind::Sphere);
     expect_at(r.reflected.next->object.loc, find_in_scene("object sphere"), "reflected hit");
-    EXPECT_EQ(r.refracted.record.outcome, SecondaryRecord::Outcome::None);
+    EXPECT_EQ(r.refracted.record.outcome, SecondaryRecord::Outcome::NoRay);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.parts.reflect[c], 0.8f * r.reflected.record.color[c], 1e-6f);
 }
 
