@@ -45,7 +45,10 @@ void Provenance::add_material(const SourceLoc& object, const std::string& textur
 }
 
 void Provenance::reorder_instances(const std::vector<std::uint32_t>& order) {
-    if (instance_chain_.size() != order.size()) return;  // nothing recorded (or not for these)
+    if (instance_chain_.size() != order.size()) {  // not recorded for these instances: claim nothing
+        instance_chain_.clear();
+        return;
+    }
     std::vector<std::uint32_t> reordered(order.size());
     for (std::size_t i = 0; i < order.size(); ++i) reordered[i] = instance_chain_[order[i]];
     instance_chain_ = std::move(reordered);
