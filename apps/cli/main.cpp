@@ -7,6 +7,7 @@
 #include <string>
 
 #include "film/image_io.h"
+#include "inspect_command.h"
 #include "interrupt.h"
 #include "load_report.h"
 #include "progress.h"
@@ -27,9 +28,24 @@ int run(int argc, char** argv) {
     RenderOptions o;
     add_render_options(app, o);
     add_timeout_option(app, o);
+    std::string inspect;  // whitted only (whitted-mpi has no use for it): not in render_options
+    app.add_option("--inspect", inspect,
+                   "Print what made pixel X,Y (column, row; row 0 at the top) with these render settings: its "
+                   "object and the scene lines above it, material, lights, shadows, reflected and refracted rays, "
+                   "and its colour in parts. Renders nothing else, writes no image")
+        ->type_name("X,Y");
     if (int code = parse_render_options(app, o, argc, argv, "whitted"); code != kExitOk) return code < 0 ? 0 : code;
+    std::optional<PixelArg> pixel;
+    if (app.get_option("--inspect")->count() > 0) {
+        std::string problem;
+        pixel = parse_pixel_arg(inspect, o.width, o.height, problem);
+        if (!pixel) {
+            std::cerr << "whitted: error: " << problem << "\n";
+            return kExitUsage;
+        }
+    }
     // A missing folder or a read-only one is found now, not after a long render (as POV-Ray does).
-    if (std::string problem = output_unwritable(o.output); !problem.empty()) {
+    if (std::string problem = pixel ? "" : output_unwritable(o.output); !problem.empty()) {
         std::cerr << "whitted: error: " << problem << "\n";
         return kExitIo;
     }
@@ -40,6 +56,7 @@ int run(int argc, char** argv) {
     if (int code = report_load(loaded, o, "whitted", deadline.timed_out()); code != kExitOk) return code;
 
     RenderJob job = render_job(o, &interrupt_flag());
+    if (pixel) return print_inspection(*loaded.scene, job, *pixel, o.scene_path);
     ProgressLine progress(job.tile_count(), !o.quiet && isatty(STDERR_FILENO));
     job.on_tile = [&](const Tile&) { progress.tile_done(); };
 

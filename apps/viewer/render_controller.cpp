@@ -213,6 +213,9 @@ void RenderController::run(std::shared_ptr<Job> job) {
             image_ = Image(s.width, s.height);
             ++image_version_;
         }
+        shown_ = Shown{scene, s, job->path};
+        shown_.settings.cancel = nullptr;
+        shown_.settings.on_tile = nullptr;
         changed_.notify_all();
     }
     const auto integrator = make_integrator(*scene, s.camera_for(*scene), s.integrator);
@@ -314,6 +317,11 @@ bool RenderController::copy_image_if_changed(Image& out, std::uint64_t& version)
 Image RenderController::image() const {
     std::lock_guard lock(mutex_);
     return image_;
+}
+
+RenderController::Shown RenderController::shown() const {
+    std::lock_guard lock(mutex_);
+    return shown_;
 }
 
 bool RenderController::wait(std::chrono::milliseconds timeout) const {

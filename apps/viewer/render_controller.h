@@ -94,6 +94,15 @@ public:
     bool copy_image_if_changed(Image& out, std::uint64_t& version) const;
     Image image() const;
 
+    // The scene and settings of the image being shown (the last job that began rendering): what
+    // the pixel inspector looks at. Null scene before any job rendered.
+    struct Shown {
+        std::shared_ptr<const Scene> scene;
+        RenderJob settings;  // without callbacks
+        std::string scene_path;
+    };
+    Shown shown() const;
+
     // Blocks until the current job is no longer loading or rendering, or the timeout passes.
     // For tests and batch use; the UI never calls it. Returns true if the job ended.
     bool wait(std::chrono::milliseconds timeout) const;
@@ -117,6 +126,7 @@ private:
     RenderStatus status_;
     std::chrono::steady_clock::time_point started_{};
     Image image_;
+    Shown shown_;  // what image_ is a render of
     std::uint64_t image_version_ = 0;
     std::uint64_t next_job_ = 0;
 

@@ -69,7 +69,8 @@ void ViewerWindow::build_menus() {
 
     m->add("&Render/&Render", FL_F + 5, [](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->render(); }, this);
     m->add("&Render/&Stop", FL_Escape, call<&ViewerWindow::stop>, this);
-    m->add("&Render/Scene &time...", FL_CTRL + 't', call<&ViewerWindow::ask_time>, this, FL_MENU_DIVIDER);
+    m->add("&Render/Scene &time...", FL_CTRL + 't', call<&ViewerWindow::ask_time>, this);
+    m->add("&Render/&Inspect pixel...", FL_CTRL + 'i', call<&ViewerWindow::ask_inspect>, this, FL_MENU_DIVIDER);
     // Every tool bar control, also when the window is too narrow to show it.
     m->add("&Render/&Width...", 0, [](Fl_Widget*, void* v) { ask_spinner(static_cast<ViewerWindow*>(v)->width_, "Image width"); }, this);
     m->add("&Render/&Height...", 0, [](Fl_Widget*, void* v) { ask_spinner(static_cast<ViewerWindow*>(v)->height_, "Image height"); }, this);

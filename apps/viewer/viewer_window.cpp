@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <thread>
 
 #include <FL/fl_ask.H>
@@ -28,6 +29,7 @@
 #include "film/image_io.h"
 #include "flatten/flatten.h"
 #include "viewer_util.h"
+#include "inspector_window.h"  // [inspector]
 
 namespace whitted::viewer {
 namespace {
@@ -51,6 +53,7 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
 
     view_ = new ImageView(0, kMenuH + kToolH, W, 100);
     connect_view();
+    view_->on_inspect = [this](int px, int py) { inspect(px, py); };  // [inspector]
 
     messages_ = new Fl_Text_Display(0, 0, W, kMessagesH);
     message_text_ = new Fl_Text_Buffer();

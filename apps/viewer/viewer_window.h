@@ -3,6 +3,7 @@
 // the RenderController's threads, which this window polls ten times a second.
 #include <map>
 #include <optional>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -23,6 +24,8 @@ class Fl_Text_Buffer;
 class Fl_Value_Slider;
 
 namespace whitted::viewer {
+
+class InspectorWindow;  // [inspector]
 
 struct ViewerOptions {
     std::string scene;                       // "" = start empty
@@ -52,6 +55,8 @@ public:
     void render(bool force_reload = false);
     void stop();
     void ask_time();  // Render ▸ Scene time: asks for t, then renders
+    void inspect(int x, int y);  // [inspector] shows the report of image pixel (x, y) (inspector_window.cpp)
+    void ask_inspect();          // [inspector] Render ▸ Inspect pixel: asks for X,Y
     void quit();
     int exit_code() const { return exit_code_; }
     bool quitting() const { return quitting_; }
@@ -146,6 +151,7 @@ private:
     bool quitting_ = false;
     std::string extra_message_;  // a message of the viewer's own (e.g. a failed save)
     int exit_code_ = 0;
+    std::unique_ptr<InspectorWindow> inspector_;  // [inspector] made on first use
 
     // The camera on screen: none = the file's. The file's camera as written (of the last load that
     // got that far), and the camera when the current drag began.

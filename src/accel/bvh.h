@@ -17,8 +17,11 @@ namespace whitted {
 
 // Builds the hierarchy and reorders `instances` to match it, on `threads` threads (0 = all
 // hardware threads; the tree is the same for any count). Throws std::length_error beyond
-// Bvh4Node::kMaxInstances instances. Mesh instances take their bounds from `meshes`.
-Bvh build_bvh(std::vector<Instance>& instances, int threads = 0, const std::vector<TriangleMesh>* meshes = nullptr);
+// Bvh4Node::kMaxInstances instances. Mesh instances take their bounds from `meshes`. With
+// `leaf_order`: the instance now at place i was at (*leaf_order)[i] (for side tables that follow
+// the instances).
+Bvh build_bvh(std::vector<Instance>& instances, int threads = 0, const std::vector<TriangleMesh>* meshes = nullptr,
+              std::vector<std::uint32_t>* leaf_order = nullptr);
 
 // The same tree over any n boxes (box_of(i), i < n); order[k] gets the primitive that leaf slot k
 // holds (leaves refer to slots). The BVH of instances and of a mesh's triangles are both this.

@@ -346,13 +346,15 @@ Bvh build_bvh_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t
     return bvh;
 }
 
-Bvh build_bvh(std::vector<Instance>& instances, int threads, const std::vector<TriangleMesh>* meshes) {
+Bvh build_bvh(std::vector<Instance>& instances, int threads, const std::vector<TriangleMesh>* meshes,
+              std::vector<std::uint32_t>* leaf_order) {
     const float traversal_cost = instances.size() > kLargeScene ? kTraversalCostLarge : kTraversalCostCached;
     std::vector<std::uint32_t> source;
     Bvh bvh = build_bvh_over_boxes(
         instances.size(), [&](std::uint32_t i) { return padded_world_bounds(instances[i], meshes); },
         {traversal_cost, kMaxInstanceLeaf}, threads, source);
     const std::size_t n = instances.size();
+    if (leaf_order) *leaf_order = source;
     // Reorder the instances to leaf order in place, following the permutation's cycles.
     for (std::uint32_t i = 0; i < n; ++i) {
         if (source[i] == i) continue;

@@ -10,7 +10,9 @@ Scene accelerate(FlatScene flat, int threads) {
     // The bottom level first: a mesh instance's world bounds come from its mesh's box.
     for (TriangleMesh& mesh : scene.flat.meshes)
         if (mesh.bvh.nodes.empty()) build_mesh_bvh(mesh, threads);
-    scene.bvh = build_bvh(scene.flat.instances, threads, &scene.flat.meshes);
+    std::vector<std::uint32_t> order;
+    scene.bvh = build_bvh(scene.flat.instances, threads, &scene.flat.meshes, &order);
+    scene.flat.provenance.reorder_instances(order);
     return scene;
 }
 

@@ -8,6 +8,7 @@
 
 #include "camera/camera.h"
 #include "mesh/triangle_mesh.h"
+#include "flatten/provenance.h"
 #include "scene/scene_description.h"
 
 namespace whitted {
@@ -66,6 +67,7 @@ struct FlatScene {
     Camera camera;  // the file's camera: what a render uses unless it is given another
     glm::vec3 background{0.0f};
     glm::vec3 ambient_intensity{1.0f};
+    Provenance provenance;  // where each instance, material and light came from (the inspector's)
 };
 
 }  // namespace whitted

@@ -157,7 +157,11 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
     scene.background = desc.background;
     scene.ambient_intensity = desc.ambient_intensity;
     scene.camera = make_camera(desc.camera);
-    for (const LightDesc& l : desc.lights) scene.lights.push_back(to_light(l));
+    Provenance& prov = scene.provenance;
+    for (const LightDesc& l : desc.lights) {
+        scene.lights.push_back(to_light(l));
+        prov.add_light(l.loc);
+    }
     if (desc.root < 0) {
         Diagnostic d;
         d.loc.file = desc.path;
@@ -203,6 +207,7 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
         if (inserted) {
             scene.materials.push_back(to_material(o.material));
             result.material_sources.push_back(&o);
+            prov.add_material(o.loc, o.material.texture ? o.material.texture->file : std::string());
         }
         return it->second;
     };
@@ -210,12 +215,18 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
     // Depth-first walk with an explicit stack: a long chain of subgraphs must not overflow
     // the call stack. world = M(root's trans) · … · M(leaf trans) (spec §3).
     // Composed in double, so that long chains lose no precision before the single rounding.
+    // Each frame also carries its provenance link (the subgraph's `mastersubgraph` line, below
+    // the `subgraph` line that used it), the parent of its trans blocks' links.
     struct Frame {
         int subgraph;
         glm::dmat4 parent;
+        std::uint32_t link;
     };
     unsigned checks = 0;
     std::vector<Frame> stack{{desc.root, glm::dmat4(1.0)}};
+    const SubgraphDesc& root = desc.subgraphs[desc.root];
+    std::vector<Frame> stack{
+        {desc.root, glm::dmat4(1.0), prov.add_link(Provenance::kNone, LinkKind::Mastersubgraph, root.name, root.loc)}};
     while (!stack.empty()) {
         Frame f = stack.back();
         stack.pop_back();
@@ -232,13 +243,16 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
                     return result;
                 }
             }
-            for (const ObjectDesc& o : t.objects)
+            const std::uint32_t trans_link = prov.add_link(f.link, LinkKind::Trans, "", t.loc);
+            for (const ObjectDesc& o : t.objects) {
                 scene.instances.push_back(make_instance(world, o.kind, material_index(o)));
+                prov.add_instance(trans_link);
+            }
             for (const SubgraphRef& ref : t.subgraphs) {
-                // A subgraph that draws nothing is not entered: 41 levels of doubling over an
-                // empty one would otherwise be 2^41 steps for no object at all.
-                const int child = find_subgraph(index, ref.name);
-                if (child >= 0 && counter.instances(child) > 0) stack.push_back({child, world});
+    unsigned checks = 0;
+    const SubgraphDesc& root = desc.subgraphs[desc.root];
+    std::vector<Frame> stack{
+        {desc.root, glm::dmat4(1.0), prov.add_link(Provenance::kNone, LinkKind::Mastersubgraph, root.name, root.loc)}};
             }
         }
     }

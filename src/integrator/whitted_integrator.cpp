@@ -33,7 +33,14 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Camera& camera, i
 glm::vec3 WhittedIntegrator::radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler,
                                       RayCounts& counts) const {
     ++counts.camera;
-    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts);
+    NoShadingRecorder none;
+    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, none);
+}
+
+glm::vec3 WhittedIntegrator::radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler, RayCounts& counts,
+                                      ShadingRecorder& recorder) const {
+    ++counts.camera;
+    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, recorder);
 }
 
 // Whether the shadow query may start at the light. A hit found along a ray is off by about 1e-7
@@ -110,20 +117,27 @@ void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sample
                                                                                   : ShadowQuery::Blocked;
         }
     }
+    NoShadingRecorder none;
     for (int l = 0; l < kPacketSize; ++l) {
         if (!((active >> l) & 1)) continue;
         ++counts.camera;
-        out[l] = (found >> l) & 1
-                     ? shade_at(points[l], 0, glm::vec3(1.0f), SampleContext{sampler, batch.keys[l]}, counts, &shadows, l)
-                     : flat.background;
+        out[l] = (found >> l) & 1 ? shade_at(points[l], 0, glm::vec3(1.0f), SampleContext{sampler, batch.keys[l]},
+                                             counts, &shadows, l, none)
+                                  : flat.background;
     }
 }
 
+template <class Recorder>
 glm::vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx,
-                                   RayCounts& counts) const {
+                                   RayCounts& counts, Recorder& rec) const {
     Hit hit;
-    if (!scene_.intersect(ray, hit)) return scene_.flat.background;
-    return shade_at(shading_point(ray, hit), depth, weight, ctx, counts, nullptr, 0);
+    if (!scene_.intersect(ray, hit)) {
+        rec.miss(scene_.flat.background);
+        return scene_.flat.background;
+    }
+    const ShadingPoint p = shading_point(ray, hit);
+    rec.hit(ray, hit, p.s, p.n, p.outside, depth);
+    return shade_at(p, depth, weight, ctx, counts, nullptr, 0, rec);
 }
 
 WhittedIntegrator::ShadingPoint WhittedIntegrator::shading_point(const Ray& ray, const Hit& hit) const {
@@ -154,9 +168,10 @@ bool WhittedIntegrator::secondary_direction(const glm::vec3& ideal, const glm::v
     return above ? side > 0.0f : side < 0.0f;
 }
 
+template <class Recorder>
 glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight,
                                       const SampleContext& ctx, RayCounts& counts, const PacketShadows* shadows,
-                                      int lane) const {
+                                      int lane, Recorder& rec) const {
     const FlatScene& flat = scene_.flat;
     const Surface& s = p.s;
     const Material& m = *s.material;
@@ -164,11 +179,15 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
     const bool outside = p.outside;
 
     glm::vec3 color = m.emit + s.ambient * flat.ambient_intensity;
+    rec.base(m.emit, s.ambient * flat.ambient_intensity);
 
     for (std::size_t li = 0; li < flat.lights.size(); ++li) {
         const Light& light = flat.lights[li];
         const LightSample ls = light_sample(li, s.point, depth, ctx);
-        if (!faces_light(p, ls)) continue;
+        if (!faces_light(p, ls)) {
+            if constexpr (Recorder::kRecords) rec.light(LightTerm{li, ls, false, 0.0f, glm::vec3(0.0f), {}, {}});
+            continue;
+        }
         const float n_dot_l = glm::dot(n, ls.to_light);
         ++counts.shadow;
         // Camera-ray hits ask from the light first (so that a packet's shadow rays can share an
@@ -179,14 +198,24 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
                                  : known == ShadowQuery::Blocked            ? glm::vec3(0.0f)
                                  : known == ShadowQuery::Glass || depth > 0 ? through_glass(ls, above)
                                                                             : shadow_factor(light, ls, above);
-        if (max_component(shadow) <= 0.0f) continue;
+        if (max_component(shadow) <= 0.0f) {
+            if constexpr (Recorder::kRecords) rec.light(LightTerm{li, ls, true, n_dot_l, shadow, {}, {}});
+            continue;
+        }
         glm::vec3 r = 2.0f * n_dot_l * n - ls.to_light;
         float r_dot_v = glm::dot(r, to_eye);
         float spec = r_dot_v > 0.0f ? std::pow(r_dot_v, m.shine) : 0.0f;
         color += shadow * ls.intensity * (s.diffuse * n_dot_l + m.specular * spec);
+        if constexpr (Recorder::kRecords)
+            rec.light(LightTerm{li, ls, true, n_dot_l, shadow, shadow * ls.intensity * (s.diffuse * n_dot_l),
+                                shadow * ls.intensity * (m.specular * spec)});
     }
 
-    if (depth >= max_depth_) return color;
+    if (depth >= max_depth_) {
+        rec.depth_limit();
+        rec.done(color);
+        return color;
+    }
 
     glm::vec3 reflect_weight = m.reflect;
     if (m.is_transparent()) {
@@ -199,10 +228,19 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
             if (max_component(w) >= kMinWeight &&
                 secondary_direction(refracted, n, false, m.gloss, dimension::gloss_refract(depth), ctx, d)) {
                 ++counts.refracted;
-                color += m.transparent * trace(Ray{below, d}, depth + 1, w, ctx, counts);
+                rec.secondary(SecondaryKind::Refract, SecondaryRecord::Outcome::Traced, Ray{below, d}, w);
+                const glm::vec3 c = trace(Ray{below, d}, depth + 1, w, ctx, counts, rec);
+                color += m.transparent * c;
+                rec.secondary_color(c, m.transparent * c);
+            } else if constexpr (Recorder::kRecords) {
+                rec.secondary(SecondaryKind::Refract,
+                              max_component(w) >= kMinWeight ? SecondaryRecord::Outcome::OffSurface
+                                                             : SecondaryRecord::Outcome::TooWeak,
+                              Ray{below, refracted}, w);
             }
         } else {
             reflect_weight += m.transparent;  // total internal reflection: one mirror ray carries both
+            rec.total_internal_reflection();
         }
     }
     if (max_component(reflect_weight) > 0.0f) {
@@ -212,9 +250,18 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
             secondary_direction(dir - 2.0f * glm::dot(dir, n) * n, n, true, m.gloss, dimension::gloss_reflect(depth),
                                 ctx, d)) {
             ++counts.reflected;
-            color += reflect_weight * trace(Ray{above, d}, depth + 1, w, ctx, counts);
+            rec.secondary(SecondaryKind::Reflect, SecondaryRecord::Outcome::Traced, Ray{above, d}, w);
+            const glm::vec3 c = trace(Ray{above, d}, depth + 1, w, ctx, counts, rec);
+            color += reflect_weight * c;
+            rec.secondary_color(c, reflect_weight * c);
+        } else if constexpr (Recorder::kRecords) {
+            rec.secondary(SecondaryKind::Reflect,
+                          max_component(w) >= kMinWeight ? SecondaryRecord::Outcome::OffSurface
+                                                         : SecondaryRecord::Outcome::TooWeak,
+                          Ray{above, dir - 2.0f * glm::dot(dir, n) * n}, w);
         }
     }
+    rec.done(color);
     return color;
 }
 

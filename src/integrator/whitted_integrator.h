@@ -8,6 +8,7 @@
 
 #include "integrator/integrator.h"
 #include "integrator/light_sample.h"
+#include "integrator/shading_record.h"
 #include "integrator/surface.h"
 
 namespace whitted {
@@ -24,6 +25,10 @@ public:
 
     // One camera ray on its own, as sample `key`.
     glm::vec3 radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler, RayCounts& counts) const;
+    // The same, telling `recorder` every step of the shading (the pixel inspector): the same code,
+    // which the renderer runs with a recorder that does nothing.
+    glm::vec3 radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler, RayCounts& counts,
+                       ShadingRecorder& recorder) const;
 
 private:
     // A hit made ready for shading: its surface, the normal facing the viewer, the points just
@@ -51,12 +56,14 @@ private:
     // (light_sample, through_glass and secondary_direction are inline: called per light and
     // per bounce, they are a test and a call in the common case.)
     inline LightSample light_sample(std::size_t li, const glm::vec3& point, int depth, const SampleContext& ctx) const;
+    template <class Recorder>
     glm::vec3 shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight, const SampleContext& ctx,
-                       RayCounts& counts, const PacketShadows* shadows, int lane) const;
+                       RayCounts& counts, const PacketShadows* shadows, int lane, Recorder& rec) const;
     inline glm::vec3 through_glass(const LightSample& ls, const glm::vec3& start) const;
     glm::vec3 shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start) const;
-    glm::vec3 trace(const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx,
-                    RayCounts& counts) const;
+    template <class Recorder>
+    glm::vec3 trace(const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx, RayCounts& counts,
+                    Recorder& rec) const;
     // The direction of a reflected or refracted ray: the ideal one, or with gloss one drawn from
     // the lobe around it (false: it fell on the wrong side of the surface and carries nothing).
     inline bool secondary_direction(const glm::vec3& ideal, const glm::vec3& n, bool above, float gloss,

@@ -35,13 +35,19 @@ glm::vec3 TileRenderer::displayed(const glm::vec3& c) {
     return c;
 }
 
-inline Ray TileRenderer::camera_ray(const Sampler& sampler, int x, int y, std::uint32_t index) const {
+Ray camera_sample_ray(const Camera& camera, const Sampler& sampler, int width, int height, int x, int y,
+                      std::uint32_t index) {
     if (sampler.centred())  // the pixel's centre through the lens centre: no sampler arithmetic per ray
-        return camera_.pinhole_ray(job_.width, job_.height, float(x) + 0.5f, float(y) + 0.5f);
+        return camera.pinhole_ray(width, height, float(x) + 0.5f, float(y) + 0.5f);
     const SampleKey key{std::uint32_t(x), std::uint32_t(y), index};
     const glm::vec2 at = sampler.pixel_offset(key);
-    return camera_.generate_ray(job_.width, job_.height, float(x) + at.x, float(y) + at.y,
-                                sampler.get2d(key, dimension::kLens));
+    return camera.generate_ray(width, height, float(x) + at.x, float(y) + at.y, sampler.get2d(key, dimension::kLens));
+}
+
+inline Ray TileRenderer::camera_ray(const Sampler& sampler, int x, int y, std::uint32_t index) const {
+    if (sampler.centred())  // camera_sample_ray's first case, inline: the ray of every one-sample render
+        return camera_.pinhole_ray(job_.width, job_.height, float(x) + 0.5f, float(y) + 0.5f);
+    return camera_sample_ray(camera_, sampler, job_.width, job_.height, x, y, index);
 }
 
 bool TileRenderer::render(const Tile& t, Film& film) {

@@ -20,6 +20,11 @@ namespace whitted {
 constexpr int kPacketWidth = 4;
 constexpr int kPacketHeight = kPacketSize / kPacketWidth;
 
+// The camera ray of sample `index` of pixel (x, y) of a width × height image, drawn from
+// `sampler`: what every renderer traces (and the pixel inspector traces again).
+Ray camera_sample_ray(const Camera& camera, const Sampler& sampler, int width, int height, int x, int y,
+                      std::uint32_t index);
+
 class TileRenderer {
 public:
     // One per worker thread; allocates its buffers here, for tiles up to the job's tile size.

@@ -1,0 +1,125 @@
+#include "inspector_window.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include <FL/Fl.H>
+#include <FL/Fl_Box.H>
+#include <FL/Fl_Button.H>
+#include <FL/Fl_Text_Buffer.H>
+#include <FL/Fl_Text_Display.H>
+#include <FL/fl_ask.H>
+
+#include "inspect/report_text.h"
+#include "viewer_window.h"
+
+namespace whitted::viewer {
+
+// The report's text: selectable, Ctrl+C copies; a double click on a line opens its location.
+class ReportDisplay : public Fl_Text_Display {
+public:
+    ReportDisplay(int x, int y, int w, int h, InspectorWindow& owner) : Fl_Text_Display(x, y, w, h), owner_(owner) {}
+    int handle(int event) override {
+        if (event == FL_PUSH && Fl::event_button() == FL_LEFT_MOUSE && Fl::event_clicks() > 0 && buffer()) {
+            const int pos = xy_to_position(Fl::event_x(), Fl::event_y());
+            char* line = buffer()->line_text(pos);
+            const std::string text = line ? line : "";
+            std::free(line);
+            owner_.open_line(text);
+            return 1;
+        }
+        return Fl_Text_Display::handle(event);
+    }
+
+private:
+    InspectorWindow& owner_;
+};
+
+namespace {
+constexpr int kW = 760, kH = 520, kPad = 8, kButtonH = 28;
+}
+
+InspectorWindow::InspectorWindow() : Fl_Double_Window(kW, kH, "Pixel inspector") {
+    buffer_ = new Fl_Text_Buffer();
+    display_ = new ReportDisplay(kPad, kPad, kW - 2 * kPad, kH - 3 * kPad - kButtonH, *this);
+    display_->buffer(buffer_);
+    display_->textfont(FL_COURIER);
+    display_->textsize(13);
+    copy_ = new Fl_Button(kPad, kH - kPad - kButtonH, 90, kButtonH, "&Copy");
+    copy_->callback([](Fl_Widget*, void* v) {
+        const std::string& t = static_cast<InspectorWindow*>(v)->text_;
+        Fl::copy(t.c_str(), int(t.size()), 1);  // the clipboard (Ctrl+V elsewhere)
+        Fl::copy(t.c_str(), int(t.size()), 0);  // and the selection (middle click)
+    }, this);
+    open_ = new Fl_Button(kPad + 98, kH - kPad - kButtonH, 330, kButtonH, "Open the object's line");
+    open_->callback([](Fl_Widget*, void* v) {
+        auto* w = static_cast<InspectorWindow*>(v);
+        w->open_loc(w->object_loc_);
+    }, this);
+    hint_ = new Fl_Box(kPad + 436, kH - kPad - kButtonH, kW - 444 - kPad, kButtonH,
+                       "Click a pixel; Shift+hover follows the mouse");
+    hint_->align(FL_ALIGN_INSIDE | FL_ALIGN_LEFT | FL_ALIGN_CLIP);
+    hint_->labelsize(12);
+    end();
+    resizable(display_);
+    show_result(inspect_message("Click a pixel of the image (or hover over it with Shift held) to see what made it."));
+}
+
+InspectorWindow::~InspectorWindow() {
+    display_->buffer(nullptr);
+    delete buffer_;
+}
+
+void InspectorWindow::show_result(const InspectResult& r) {
+    text_ = r.ok ? r.text : r.message + "\n";
+    base_dir_ = r.base_dir;
+    buffer_->text(text_.c_str());
+    object_loc_ = r.ok && r.report.hit ? r.report.hit->object.loc : SourceLoc{};
+    if (object_loc_.line > 0) {
+        open_label_ = "Open " + display_loc(object_loc_, base_dir_) + " in the editor";
+        open_->copy_label(open_label_.c_str());
+        open_->activate();
+    } else {
+        open_->copy_label("Open the object's line");
+        open_->deactivate();
+    }
+    redraw();
+}
+
+void InspectorWindow::open_line(const std::string& line) {
+    if (const auto loc = location_in_line(line, base_dir_)) open_loc(*loc);
+}
+
+void InspectorWindow::open_loc(const SourceLoc& loc) {
+    const std::string editor = chosen_editor(std::getenv("VISUAL"), std::getenv("EDITOR"));
+    if (editor.empty()) {
+        fl_message("Set $VISUAL or $EDITOR to open %s:%d in your editor.", loc.file.c_str(), loc.line);
+        return;
+    }
+    if (!launch_detached(editor_command(editor, loc))) fl_alert("Could not start the editor '%s'.", editor.c_str());
+}
+
+// The viewer window's side of the inspector (kept here, out of viewer_window.cpp).
+void ViewerWindow::inspect(int x, int y) {
+    if (!inspector_) inspector_ = std::make_unique<InspectorWindow>();
+    inspector_->show_result(inspect_shown_pixel(controller_, x, y));
+    if (!inspector_->shown()) inspector_->show();
+}
+
+void ViewerWindow::ask_inspect() {
+    const RenderController::Shown shown = controller_.shown();
+    if (!inspector_) inspector_ = std::make_unique<InspectorWindow>();
+    inspector_->show();
+    if (!shown.scene) return;
+    const char* answer = fl_input("Pixel to inspect, X,Y (column, row; row 0 at the top):", "0,0");
+    if (!answer) return;
+    int x = -1, y = -1;
+    char rest = 0;
+    if (std::sscanf(answer, "%d,%d%c", &x, &y, &rest) != 2) {
+        inspector_->show_result(inspect_message(std::string("not a pixel: '") + answer + "' (write X,Y)"));
+        return;
+    }
+    inspect(x, y);
+}
+
+}  // namespace whitted::viewer

@@ -1,0 +1,43 @@
+#pragma once
+// The pixel inspector's window: the report of the pixel last clicked (or hovered with Shift) on
+// the image, as selectable, copyable text. Double-clicking a line that names FILE:LINE:COL, or
+// the button under the text, opens $VISUAL / $EDITOR at that line. The report itself comes
+// from inspect_action.h (display-free).
+#include <string>
+
+#include <FL/Fl_Double_Window.H>
+
+#include "inspect_action.h"
+
+class Fl_Button;
+class Fl_Text_Buffer;
+class Fl_Box;
+
+namespace whitted::viewer {
+
+class ReportDisplay;
+
+class InspectorWindow : public Fl_Double_Window {
+public:
+    InspectorWindow();
+    ~InspectorWindow() override;
+
+    // Shows the report (or why there is none).
+    void show_result(const InspectResult& result);
+    const std::string& text() const { return text_; }
+
+    // Opens the editor at the location named on `line` of the report; a message when it cannot.
+    void open_line(const std::string& line);
+
+private:
+    void open_loc(const SourceLoc& loc);
+
+    ReportDisplay* display_ = nullptr;
+    Fl_Text_Buffer* buffer_ = nullptr;
+    Fl_Button *copy_ = nullptr, *open_ = nullptr;
+    Fl_Box* hint_ = nullptr;
+    std::string text_, base_dir_, open_label_;
+    SourceLoc object_loc_;
+};
+
+}  // namespace whitted::viewer

@@ -1,0 +1,77 @@
+#pragma once
+// Where each flattened thing came from in the scene file: for every instance the chain of
+// mastersubgraph / trans / subgraph lines above its object, for every material its object block,
+// for every light its block. A side table (the pixel inspector reads it), never touched by ray
+// traversal: the instance array stays as small as it was.
+//
+// Chains share their prefixes: every link names its parent, so an instance costs one index and
+// a subgraph used a thousand times adds its own lines once per use, not once per object.
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "parse/diagnostic.h"
+
+namespace whitted {
+
+enum class LinkKind : unsigned char { Mastersubgraph, Trans, Subgraph };
+const char* link_keyword(LinkKind kind);  // "mastersubgraph", "trans", "subgraph"
+
+// One line of a chain, resolved for reading.
+struct ChainLink {
+    LinkKind kind;
+    std::string name;  // mastersubgraph / subgraph: the subgraph's name; trans: ""
+    SourceLoc loc;     // the keyword (mastersubgraph, trans) or the name after `subgraph`
+};
+
+class Provenance {
+public:
+    static constexpr std::uint32_t kNone = 0xffffffffu;
+
+    // Building (flatten): a link below `parent` (kNone: a chain's top); returns its index.
+    std::uint32_t add_link(std::uint32_t parent, LinkKind kind, const std::string& name, const SourceLoc& loc);
+    void add_instance(std::uint32_t chain) { instance_chain_.push_back(chain); }
+    void add_material(const SourceLoc& object, const std::string& texture_file);
+    void add_light(const SourceLoc& loc) { lights_.push_back(compact(loc)); }
+    // The BVH reorders the instances: instance i is now the one that was at order[i].
+    void reorder_instances(const std::vector<std::uint32_t>& order);
+
+    // Reading. Whether anything was recorded for the instance (scenes built by hand have none).
+    bool has_instance(std::uint32_t instance) const { return instance < instance_chain_.size(); }
+    // The chain above the instance's object, from the root down to the trans block holding it.
+    std::vector<ChainLink> chain(std::uint32_t instance) const;
+    // The `object` keyword of material `m`'s block (materials are one per object block), the
+    // texture file as written there ("" = none).
+    SourceLoc material_object(std::uint32_t m) const;
+    std::string material_texture(std::uint32_t m) const;
+    SourceLoc light(std::size_t l) const;
+
+private:
+    struct Loc {
+        std::uint32_t file = kNone;  // into files_
+        int line = 0, col = 0;
+    };
+    struct Link {
+        std::uint32_t parent;
+        std::uint32_t name;  // into names_, kNone = none
+        Loc loc;
+        LinkKind kind;
+    };
+    Loc compact(const SourceLoc& loc);
+    SourceLoc expand(const Loc& loc) const;
+    struct Table {
+        std::vector<std::string> strings;
+        std::unordered_map<std::string, std::uint32_t> index;
+        std::uint32_t intern(const std::string& s);
+    };
+
+    Table files_, names_;  // file paths; subgraph names and texture files
+    std::uint32_t last_file_ = kNone;
+    std::vector<Link> links_;
+    std::vector<std::uint32_t> instance_chain_;  // per instance: its innermost link
+    std::vector<Loc> material_objects_, lights_;
+    std::vector<std::uint32_t> material_textures_;  // into names_, kNone = no texture
+};
+
+}  // namespace whitted
