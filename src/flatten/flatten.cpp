@@ -223,7 +223,6 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
         std::uint32_t link;
     };
     unsigned checks = 0;
-    std::vector<Frame> stack{{desc.root, glm::dmat4(1.0)}};
     const SubgraphDesc& root = desc.subgraphs[desc.root];
     std::vector<Frame> stack{
         {desc.root, glm::dmat4(1.0), prov.add_link(Provenance::kNone, LinkKind::Mastersubgraph, root.name, root.loc)}};
@@ -249,10 +248,13 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
                 prov.add_instance(trans_link);
             }
             for (const SubgraphRef& ref : t.subgraphs) {
-    unsigned checks = 0;
-    const SubgraphDesc& root = desc.subgraphs[desc.root];
-    std::vector<Frame> stack{
-        {desc.root, glm::dmat4(1.0), prov.add_link(Provenance::kNone, LinkKind::Mastersubgraph, root.name, root.loc)}};
+                // A subgraph that draws nothing is not entered: 41 levels of doubling over an
+                // empty one would otherwise be 2^41 steps for no object at all.
+                if (int child = find_subgraph(index, ref.name); child >= 0 && counter.instances(child) > 0) {
+                    const SubgraphDesc& sg = desc.subgraphs[child];
+                    const std::uint32_t use = prov.add_link(trans_link, LinkKind::Subgraph, ref.name, ref.loc);
+                    stack.push_back({child, world, prov.add_link(use, LinkKind::Mastersubgraph, sg.name, sg.loc)});
+                }
             }
         }
     }
