@@ -9,7 +9,9 @@ whitted=$build/apps/cli/whitted
 mpi=$build/apps/mpi/whitted-mpi
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-mpirun=(mpirun --oversubscribe --allow-run-as-root --mca btl self,vader)
+# --bind-to none: Open MPI binds each rank to one core when there are at most two ranks, so one
+# rank's two threads would share a core (half speed: not the protocol's cost).
+mpirun=(mpirun --oversubscribe --bind-to none --allow-run-as-root --mca btl self,vader)
 
 run() {  # label, then the arguments after the scene
     local label=$1 n=$2 threads=$3 scene=$4
