@@ -122,4 +122,17 @@ void ViewerWindow::ask_inspect() {
     inspect(x, y);
 }
 
+// A double-clicked line of the messages panel: the FILE:LINE:COL it names, in the editor (paths
+// there are relative to the scene's folder, as in the inspector's report).
+void ViewerWindow::open_message_line(const std::string& line) {
+    const auto loc = location_in_line(line, scene_dir());
+    if (!loc) return;
+    const std::string editor = chosen_editor(std::getenv("VISUAL"), std::getenv("EDITOR"));
+    if (editor.empty()) {
+        fl_message("Set $VISUAL or $EDITOR to open %s:%d in your editor.", loc->file.c_str(), loc->line);
+        return;
+    }
+    if (!launch_detached(editor_command(editor, *loc))) fl_alert("Could not start the editor '%s'.", editor.c_str());
+}
+
 }  // namespace whitted::viewer

@@ -20,6 +20,7 @@ inline constexpr Shortcut kShortcuts[] = {
     {"] / [ / \\", "Exposure up / down one stop / back to 0 (linear images)"},
     {"Left click, Shift+hover", "Inspect the pixel: its object's line, material, lights, colour parts"},
     {"Ctrl+I", "Inspect a pixel given by its column and row"},
+    {"Double-click a message", "Open the scene in $VISUAL or $EDITOR at the message's line"},
     {"Ctrl+Shift+C", "Copy the camera as a camera [ ... ] block"},
     {"Ctrl+Shift+S", "Save the camera into the scene file (asks first)"},
     {"Ctrl+O", "Open a scene (or drop a scene file on the window)"},

@@ -55,7 +55,8 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     connect_view();
     view_->on_inspect = [this](int px, int py) { inspect(px, py); };  // [inspector]
 
-    messages_ = new Fl_Text_Display(0, 0, W, kMessagesH);
+    messages_ = new MessagesView(0, 0, W, kMessagesH);
+    messages_->on_open_line = [this](const std::string& line) { open_message_line(line); };
     message_text_ = new Fl_Text_Buffer();
     message_styles_ = new Fl_Text_Buffer();
     messages_->buffer(message_text_);

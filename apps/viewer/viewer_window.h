@@ -11,6 +11,7 @@
 #include <FL/Fl_Double_Window.H>
 
 #include "image_view.h"
+#include "messages_view.h"
 #include "render_controller.h"
 
 class Fl_Menu_Bar;
@@ -57,6 +58,7 @@ public:
     void ask_time();  // Render ▸ Scene time: asks for t, then renders
     void inspect(int x, int y);  // [inspector] shows the report of image pixel (x, y) (inspector_window.cpp)
     void ask_inspect();          // [inspector] Render ▸ Inspect pixel: asks for X,Y
+    void open_message_line(const std::string& line);  // a double-clicked message: its FILE:LINE in the editor
     void quit();
     int exit_code() const { return exit_code_; }
     bool quitting() const { return quitting_; }
@@ -133,7 +135,7 @@ private:
     };
     std::vector<Tool> tools_;
     ImageView* view_ = nullptr;
-    Fl_Text_Display* messages_ = nullptr;
+    MessagesView* messages_ = nullptr;
     Fl_Text_Buffer *message_text_ = nullptr, *message_styles_ = nullptr;
     Fl_Box *scene_box_ = nullptr, *progress_box_ = nullptr, *message_box_ = nullptr, *pixel_box_ = nullptr;
     bool show_messages_ = false;

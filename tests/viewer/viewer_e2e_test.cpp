@@ -1241,6 +1241,38 @@ TEST_F(ViewerWorkbench, F1OpensTheKeyboardShortcutsWindow) {
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
+// A double-click on an error in the messages panel opens the editor at the error's line (issue 12,
+// item 5); the editor here is a script that writes down how it was called.
+TEST_F(ViewerWorkbench, DoubleClickingAnErrorOpensTheEditorAtItsLine) {
+    std::ofstream(scene_, std::ios::trunc) << "camera [ eye 0 0 5 ]\nmastersubgraph root [ trans [ object blob [ ] ] ]\n";
+    const std::string editor = dir_ + "/editor.sh", called = dir_ + "/editor-called";
+    std::ofstream(editor) << "#!/bin/sh\necho \"$@\" > '" << called << ".tmp' && mv '" << called << ".tmp' '" << called
+                          << "'\n";
+    fs::permissions(editor, fs::perms::owner_all);
+    Child viewer({WHITTED_VIEWER_PATH, scene_, "--width", std::to_string(kW), "--height", std::to_string(kH), "--threads",
+                  "2", "--ready-file", ready_},
+                 dir_ + "/viewer.log",
+                 {{"DISPLAY", x_.display()}, {"HOME", dir_}, {"VISUAL", ""}, {"EDITOR", editor},
+                  {"ASAN_OPTIONS", asan_options_for_viewer()}});
+    Ready r;
+    ASSERT_TRUE(wait_for_ready(viewer, ready_, r, [](const Ready& n) { return n.state == "failed" && !n.panel.empty(); }))
+        << viewer.output();
+    ASSERT_EQ(r.panel[0].rfind("scene.sc:2:", 0), 0u) << r.panel[0];
+    // The panel lies under the image area, across the window: its first line, double-clicked.
+    xdotool(x_.display(), "mousemove --sync " + std::to_string(r.area.x + 40) + " " +
+                              std::to_string(r.area.y + r.area.h + 10) + " click --repeat 2 --delay 80 1");
+    const auto deadline = std::chrono::steady_clock::now() + 20s;
+    while (!fs::exists(called) && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(50ms);
+    std::ifstream in(called);
+    std::string args;
+    std::getline(in, args);
+    std::string want = "+2 ";  // (piece by piece: GCC 12's -Wrestrict misfires on the one-expression form)
+    want += scene_;
+    EXPECT_EQ(args, want) << viewer.output();
+    viewer.signal(SIGTERM);
+    EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
+}
+
 // [inspector] A click on a pixel of the image opens the inspector with that pixel's report; its
 // button opens $EDITOR at the line of the object's `object` keyword (the editor here a script that
 // writes down how it was called).
