@@ -67,7 +67,8 @@ void write_chunk(const std::function<void(const void*, std::size_t)>& write, con
     put32(head, std::uint32_t(size));
     head.append(type, 4);
     uLong crc = crc32_z(0, reinterpret_cast<const Bytef*>(type), 4);
-    crc = crc32_z(crc, data, size);
+    // Only with data: zlib's crc32 given a null buffer returns its initial value (0), not crc.
+    if (size) crc = crc32_z(crc, data, size);
     std::string tail;
     put32(tail, std::uint32_t(crc));
     write(head.data(), head.size());

@@ -96,5 +96,39 @@ TEST(ImageIo, PngInBandsDecodesToThePixelsWhateverTheThreads) {
     EXPECT_EQ(fs::file_size(dir + "/bands.png"), files[0].size());
 }
 
+// Every chunk's CRC, computed here bit by bit as the PNG specification's sample code does (not
+// with zlib, which the encoder uses), and the spec's own IEND chunk: strict decoders (libpng, so
+// ImageMagick and GIMP) refuse a file with one bad CRC, where stb_image ignores them.
+std::uint32_t png_crc(const std::string& bytes) {
+    std::uint32_t c = 0xFFFFFFFFu;
+    for (unsigned char b : bytes) {
+        c ^= b;
+        for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+    }
+    return c ^ 0xFFFFFFFFu;
+}
+
+TEST(ImageIo, PngChunksCarryTheirCrcsAndTheFileEndsWithTheStandardIend) {
+    Image img(7, 5);
+    for (std::size_t i = 0; i < img.rgb.size(); ++i) img.rgb[i] = std::uint8_t(37 * i);
+    std::string png;
+    ASSERT_TRUE(encode_png(img, [&](const void* d, std::size_t n) { png.append(static_cast<const char*>(d), n); }, 1));
+    // Length 0, "IEND", CRC AE 42 60 82: the twelve bytes every PNG ends with.
+    const std::string iend("\0\0\0\0IEND\xAE\x42\x60\x82", 12);
+    ASSERT_GE(png.size(), 8u + 12u);
+    EXPECT_EQ(png.substr(png.size() - 12), iend);
+    int chunks = 0;
+    for (std::size_t at = 8; at + 12 <= png.size(); ++chunks) {
+        const auto byte = [&](std::size_t i) { return std::uint32_t(std::uint8_t(png[i])); };
+        const auto be32 = [&](std::size_t i) { return byte(i) << 24 | byte(i + 1) << 16 | byte(i + 2) << 8 | byte(i + 3); };
+        const std::size_t length = be32(at);
+        ASSERT_LE(at + 12 + length, png.size());
+        EXPECT_EQ(be32(at + 8 + length), png_crc(png.substr(at + 4, 4 + length)))
+            << "chunk " << chunks << " (" << png.substr(at + 4, 4) << ")";
+        at += 12 + length;
+    }
+    EXPECT_GE(chunks, 3);  // IHDR, IDAT, IEND at least
+}
+
 }  // namespace
 }  // namespace whitted
