@@ -24,3 +24,14 @@ for name in all all_effects all_objects mirror_test shadow_test; do
     convert "$tmp/theirs.png" -size 8x504 xc:white "$tmp/ours.png" +append -quality 88 "$out/$name.jpg"
     echo "wrote $out/$name.jpg"
 done
+
+# all_effects' sun cube: their screenshot (left) beside whitted's render of the same file with the
+# cube's `blend 1.0` changed to `blend 0.1` over `diffuse 1 1 1` (right): docs/dialects.md explains.
+mkdir -p "$tmp/edited"
+cp -r "$tests/image" "$tmp/edited/"
+sed 's/blend 1\.0/blend 0.1\n    diffuse 1 1 1/' "$tests/all_effects.sc" > "$tmp/edited/all_effects.sc"
+"$build/apps/cli/whitted" "$tmp/edited/all_effects.sc" -o "$tmp/ours.png" --width 504 --height 504 -q 2>/dev/null
+convert "$tests/all_effects.png" -crop 504x504+0+25 +repage -crop 220x180+120+60 +repage "$tmp/theirs.png"
+convert "$tmp/theirs.png" -size 8x180 xc:white \( "$tmp/ours.png" -crop 220x180+120+60 +repage \) +append \
+    -quality 88 "$out/all_effects_sun_cube.jpg"
+echo "wrote $out/all_effects_sun_cube.jpg"
