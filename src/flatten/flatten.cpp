@@ -181,12 +181,18 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
                  std::to_string(limits.max_instances)});
         return result;
     }
-    if (total > limits.max_bytes / kBytesPerInstance) {
+    // Saturating: a refused count must not wrap into an accepted estimate.
+    const std::size_t steps = counter.steps(desc.root), max = std::size_t(-1);
+    const std::size_t need = total > max / kBytesPerInstance || steps > max / kBytesPerStep / 2
+                                 ? max
+                                 : total * kBytesPerInstance + steps * kBytesPerStep;
+    if (need > limits.max_bytes) {
         result.diagnostics.push_back(
             {Severity::Error, desc.subgraphs[desc.root].loc,
-             "the scene needs about " + describe_bytes(total * kBytesPerInstance) + " of memory (" +
-                 std::to_string(total) + " objects through subgraph instancing, about " +
-                 std::to_string(kBytesPerInstance) + " bytes each with the BVH), more than the limit of " +
+             "the scene needs about " + describe_bytes(need) + " of memory (" + std::to_string(total) +
+                 " objects through subgraph instancing, about " + std::to_string(kBytesPerInstance) +
+                 " bytes each with the BVH, and " + std::to_string(steps) + " steps of expanding them, " +
+                 std::to_string(kBytesPerStep) + " bytes each), more than the limit of " +
                  describe_bytes(limits.max_bytes) + " (--max-memory)"});
         return result;
     }
@@ -199,6 +205,7 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
         return result;
     }
     scene.instances.reserve(total);
+    prov.reserve(counter.steps(desc.root), total);  // a link per step at most
 
     // One material per object block, however many times instancing draws it.
     std::unordered_map<const ObjectDesc*, std::uint32_t> material_of;
@@ -222,10 +229,28 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
         glm::dmat4 parent;
         std::uint32_t link;
     };
+    // The file's lines a chain can pass through, once each: every mastersubgraph first (a
+    // `subgraph` line's site names its target's), then per trans block its own and its references'.
+    std::vector<std::uint32_t> subgraph_site(desc.subgraphs.size()), first_trans(desc.subgraphs.size() + 1);
+    std::vector<std::uint32_t> trans_site;
+    std::vector<int> target;  // per site: the subgraph a `subgraph` line names (-1: none)
+    for (std::size_t s = 0; s < desc.subgraphs.size(); ++s)
+        subgraph_site[s] = prov.add_site(LinkKind::Mastersubgraph, desc.subgraphs[s].name, desc.subgraphs[s].loc);
+    for (std::size_t s = 0; s < desc.subgraphs.size(); ++s) {
+        first_trans[s] = std::uint32_t(trans_site.size());
+        for (const TransDesc& t : desc.subgraphs[s].children) {
+            trans_site.push_back(prov.add_site(LinkKind::Trans, "", t.loc));
+            for (const SubgraphRef& ref : t.subgraphs) {  // sites trans_site + 1, + 2, …
+                const int child = find_subgraph(index, ref.name);
+                const std::uint32_t id = prov.add_site(LinkKind::Subgraph, ref.name, ref.loc,
+                                                       child >= 0 ? subgraph_site[child] : Provenance::kNone);
+                target.resize(id + 1, -1);
+                target[id] = child;
+            }
+        }
+    }
     unsigned checks = 0;
-    const SubgraphDesc& root = desc.subgraphs[desc.root];
-    std::vector<Frame> stack{
-        {desc.root, glm::dmat4(1.0), prov.add_link(Provenance::kNone, LinkKind::Mastersubgraph, root.name, root.loc)}};
+    std::vector<Frame> stack{{desc.root, glm::dmat4(1.0), prov.add_link(Provenance::kNone, subgraph_site[desc.root])}};
     while (!stack.empty()) {
         Frame f = stack.back();
         stack.pop_back();
@@ -234,7 +259,9 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
             result.cancelled = true;
             return result;
         }
-        for (const TransDesc& t : desc.subgraphs[f.subgraph].children) {
+        const std::vector<TransDesc>& children = desc.subgraphs[f.subgraph].children;
+        for (std::size_t i = 0; i < children.size(); ++i) {
+            const TransDesc& t = children[i];
             const glm::dmat4 world = f.parent * glm::dmat4(t.matrix);
             if (!t.objects.empty()) {
                 if (std::string why = unusable_transform(world); !why.empty()) {
@@ -242,19 +269,23 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
                     return result;
                 }
             }
-            const std::uint32_t trans_link = prov.add_link(f.link, LinkKind::Trans, "", t.loc);
+            // Linked only when something below it is drawn.
+            const std::uint32_t site = trans_site[first_trans[f.subgraph] + i];
+            std::uint32_t trans_link = Provenance::kNone;
+            const auto link = [&] {
+                if (trans_link == Provenance::kNone) trans_link = prov.add_link(f.link, site);
+                return trans_link;
+            };
             for (const ObjectDesc& o : t.objects) {
                 scene.instances.push_back(make_instance(world, o.kind, material_index(o)));
-                prov.add_instance(trans_link);
+                prov.add_instance(link());
             }
-            for (const SubgraphRef& ref : t.subgraphs) {
+            for (std::uint32_t r = 0; r < t.subgraphs.size(); ++r) {
                 // A subgraph that draws nothing is not entered: 41 levels of doubling over an
                 // empty one would otherwise be 2^41 steps for no object at all.
-                if (int child = find_subgraph(index, ref.name); child >= 0 && counter.instances(child) > 0) {
-                    const SubgraphDesc& sg = desc.subgraphs[child];
-                    const std::uint32_t use = prov.add_link(trans_link, LinkKind::Subgraph, ref.name, ref.loc);
-                    stack.push_back({child, world, prov.add_link(use, LinkKind::Mastersubgraph, sg.name, sg.loc)});
-                }
+                const std::uint32_t ref_site = site + 1 + r;
+                if (int child = target[ref_site]; child >= 0 && counter.instances(child) > 0)
+                    stack.push_back({child, world, prov.add_link(link(), ref_site)});
             }
         }
     }

@@ -25,6 +25,9 @@ struct FlattenResult {
 // build's temporary arrays (bench/RESULTS.md: 1M instances, 120 MB peak RSS of a whole CLI run;
 // issue 15 measured 4.9 GB for 48M, 102 bytes each). Rounded up: an estimate must not be low.
 constexpr std::size_t kBytesPerInstance = 128;
+// And each step of the walk (a trans block or a subgraph use) may add one 8-byte provenance link,
+// the pixel inspector's chain of lines (flatten/provenance.h).
+constexpr std::size_t kBytesPerStep = 8;
 
 struct FlattenLimits {
     // A few nested subgraphs can multiply into billions of objects: refused, with an error,
@@ -33,7 +36,7 @@ struct FlattenLimits {
     // The walk itself is bounded too: subgraphs that draw nothing are never entered, and what is
     // left (trans blocks and references leading to objects) may not take more steps than this.
     std::size_t max_steps = 200'000'000;
-    // Memory: the objects, at kBytesPerInstance each, may not need more than this.
+    // Memory: the objects at kBytesPerInstance and the steps at kBytesPerStep may not need more.
     std::size_t max_bytes = std::size_t(-1);
     // Set by another thread (or a signal handler) to give up; checked every few thousand steps.
     const std::atomic<bool>* cancel = nullptr;

@@ -33,10 +33,10 @@ SourceLoc Provenance::expand(const Loc& loc) const {
     return out;
 }
 
-std::uint32_t Provenance::add_link(std::uint32_t parent, LinkKind kind, const std::string& name, const SourceLoc& loc) {
+std::uint32_t Provenance::add_site(LinkKind kind, const std::string& name, const SourceLoc& loc, std::uint32_t then) {
     const std::uint32_t n = name.empty() ? kNone : names_.intern(name);
-    links_.push_back(Link{parent, n, compact(loc), kind});
-    return std::uint32_t(links_.size() - 1);
+    sites_.push_back(Site{compact(loc), n, then, kind});
+    return std::uint32_t(sites_.size() - 1);
 }
 
 void Provenance::add_material(const SourceLoc& object, const std::string& texture_file) {
@@ -57,9 +57,15 @@ void Provenance::reorder_instances(const std::vector<std::uint32_t>& order) {
 std::vector<ChainLink> Provenance::chain(std::uint32_t instance) const {
     std::vector<ChainLink> out;
     if (!has_instance(instance)) return out;
+    const auto emit = [&](std::uint32_t site) {
+        const Site& s = sites_[site];
+        out.push_back({s.kind, s.name == kNone ? std::string() : names_.strings[s.name], expand(s.loc)});
+    };
+    // Bottom up, reversed at the end: a `subgraph` link's mastersubgraph line goes below it.
     for (std::uint32_t l = instance_chain_[instance]; l != kNone; l = links_[l].parent) {
-        const Link& link = links_[l];
-        out.push_back({link.kind, link.name == kNone ? std::string() : names_.strings[link.name], expand(link.loc)});
+        const std::uint32_t site = links_[l].site;
+        if (sites_[site].then != kNone) emit(sites_[site].then);
+        emit(site);
     }
     std::reverse(out.begin(), out.end());
     return out;

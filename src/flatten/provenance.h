@@ -5,7 +5,9 @@
 // traversal: the instance array stays as small as it was.
 //
 // Chains share their prefixes: every link names its parent, so an instance costs one index and
-// a subgraph used a thousand times adds its own lines once per use, not once per object.
+// a subgraph used a thousand times adds its own lines once per use, not once per object. A line
+// of the file (a site) is stored once, a use of it (a link) in 8 bytes: a scene of a million
+// instances through twenty levels of subgraphs keeps its chains in tens of megabytes.
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -29,8 +31,20 @@ class Provenance {
 public:
     static constexpr std::uint32_t kNone = 0xffffffffu;
 
-    // Building (flatten): a link below `parent` (kNone: a chain's top); returns its index.
-    std::uint32_t add_link(std::uint32_t parent, LinkKind kind, const std::string& name, const SourceLoc& loc);
+    // Building (flatten). A site is one line a chain can pass through, made once per line: its
+    // keyword's kind, the subgraph's name, the location; a `subgraph` line's site names the
+    // `mastersubgraph` site it leads to (`then`), so one link stands for both lines.
+    std::uint32_t add_site(LinkKind kind, const std::string& name, const SourceLoc& loc, std::uint32_t then = kNone);
+    // A use of `site` below link `parent` (kNone: a chain's top); returns the link's index.
+    std::uint32_t add_link(std::uint32_t parent, std::uint32_t site) {
+        links_.push_back(Link{parent, site});
+        return std::uint32_t(links_.size() - 1);
+    }
+    // Room for the walk's links and instances at once: no doubling of a large table mid-walk.
+    void reserve(std::size_t links, std::size_t instances) {
+        links_.reserve(links);
+        instance_chain_.reserve(instances);
+    }
     void add_instance(std::uint32_t chain) { instance_chain_.push_back(chain); }
     void add_material(const SourceLoc& object, const std::string& texture_file);
     void add_light(const SourceLoc& loc) { lights_.push_back(compact(loc)); }
@@ -52,11 +66,14 @@ private:
         std::uint32_t file = kNone;  // into files_
         int line = 0, col = 0;
     };
-    struct Link {
-        std::uint32_t parent;
-        std::uint32_t name;  // into names_, kNone = none
+    struct Site {
         Loc loc;
+        std::uint32_t name;  // into names_, kNone = none
+        std::uint32_t then;  // a `subgraph` line: the site of the mastersubgraph it names
         LinkKind kind;
+    };
+    struct Link {
+        std::uint32_t parent, site;
     };
     Loc compact(const SourceLoc& loc);
     SourceLoc expand(const Loc& loc) const;
@@ -68,6 +85,7 @@ private:
 
     Table files_, names_;  // file paths; subgraph names and texture files
     std::uint32_t last_file_ = kNone;
+    std::vector<Site> sites_;
     std::vector<Link> links_;
     std::vector<std::uint32_t> instance_chain_;  // per instance: its innermost link
     std::vector<Loc> material_objects_, lights_;

@@ -111,13 +111,15 @@ TEST(CliUntrusted, LimitsObjectsImageSizeAndTime) {
 }
 
 TEST(CliUntrusted, MaxMemoryRefusesWithTheEstimate) {
-    // 2^20 objects at 128 bytes each: about 128 MiB, refused under 100M with the estimate.
+    // 2^20 objects at 128 bytes each (128 MiB) and 2^22 - 2 steps of expanding them at 8 bytes
+    // (32 MiB; Flatten.RefusesWhatExceedsTheMemoryLimitWithTheEstimate counts them): about
+    // 160 MiB, refused under 100M with the estimate.
     const std::string dir = test::make_temp_dir();
     const std::string many = write_file(dir, "many.sc", doubling_scene(20));
     auto r = run_process({test::cli_path(), many, "-o", dir + "/m.ppm", "--width", "8", "--height", "8",
                           "--max-memory", "100M", "-q"});
     EXPECT_EQ(r.exit_code, 2) << r.output;
-    EXPECT_NE(r.output.find("needs about 128.0 MiB of memory (1048576 objects"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("needs about 160.0 MiB of memory (1048576 objects"), std::string::npos) << r.output;
     // The image counts too: 20000 × 20000 pixels × (16 bytes of film + 3 of 8-bit image) is
     // 7.6e9 bytes, 7.1 GiB, over 1G before anything is read.
     r = run_process({test::cli_path(), many, "-o", dir + "/m.ppm", "--width", "20000", "--height", "20000",

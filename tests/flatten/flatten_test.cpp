@@ -159,19 +159,25 @@ SceneDescription doubling_over_sphere(int levels) {
 }
 
 // Issue 15, finding 9: the memory a scene needs is estimated from the counts, before any object
-// is made: 2^10 spheres at kBytesPerInstance (128) each is 131,072 bytes.
+// is made: 2^10 spheres at kBytesPerInstance (128) each is 131,072 bytes; the walk takes
+// a(10) steps of kBytesPerStep (8) each, where a(0) = 2 (s0 and its trans block) and
+// a(i) = 2 + 2·a(i − 1) (the subgraph, its trans block, two uses of the level below): a(10) =
+// 2^12 − 2 = 4,094 steps, 32,752 bytes. In all 163,824 bytes (160.0 KiB).
 TEST(Flatten, RefusesWhatExceedsTheMemoryLimitWithTheEstimate) {
     const SceneDescription d = doubling_over_sphere(10);
-    static_assert(kBytesPerInstance == 128);
-    FlattenResult fits = flatten(d, {.max_bytes = 131'072});
+    static_assert(kBytesPerInstance == 128 && kBytesPerStep == 8);
+    FlattenResult fits = flatten(d, {.max_bytes = 163'824});
     ASSERT_TRUE(fits.ok());
     EXPECT_EQ(fits.scene.instances.size(), 1024u);
-    FlattenResult refused = flatten(d, {.max_bytes = 131'071});
+    EXPECT_EQ(fits.steps, 4094u);
+    FlattenResult refused = flatten(d, {.max_bytes = 163'823});
     ASSERT_FALSE(refused.ok());
     EXPECT_TRUE(refused.scene.instances.empty());
-    EXPECT_NE(refused.diagnostics[0].message.find("needs about 128.0 KiB of memory (1024 objects"), std::string::npos)
+    EXPECT_NE(refused.diagnostics[0].message.find("needs about 160.0 KiB of memory (1024 objects"), std::string::npos)
         << refused.diagnostics[0].message;
-    EXPECT_NE(refused.diagnostics[0].message.find("more than the limit of 128.0 KiB (--max-memory)"), std::string::npos)
+    EXPECT_NE(refused.diagnostics[0].message.find("and 4094 steps of expanding them, 8 bytes each"), std::string::npos)
+        << refused.diagnostics[0].message;
+    EXPECT_NE(refused.diagnostics[0].message.find("more than the limit of 160.0 KiB (--max-memory)"), std::string::npos)
         << refused.diagnostics[0].message;
 }
 
