@@ -234,8 +234,11 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
     std::vector<std::uint32_t> subgraph_site(desc.subgraphs.size()), first_trans(desc.subgraphs.size() + 1);
     std::vector<std::uint32_t> trans_site;
     std::vector<int> target;  // per site: the subgraph a `subgraph` line names (-1: none)
-    for (std::size_t s = 0; s < desc.subgraphs.size(); ++s)
-        subgraph_site[s] = prov.add_site(LinkKind::Mastersubgraph, desc.subgraphs[s].name, desc.subgraphs[s].loc);
+    for (std::size_t s = 0; s < desc.subgraphs.size(); ++s) {
+        const SubgraphDesc& sg = desc.subgraphs[s];
+        subgraph_site[s] = sg.implicit ? prov.add_site(LinkKind::ImplicitRoot, "", sg.loc)
+                                       : prov.add_site(LinkKind::Mastersubgraph, sg.name, sg.loc);
+    }
     for (std::size_t s = 0; s < desc.subgraphs.size(); ++s) {
         first_trans[s] = std::uint32_t(trans_site.size());
         for (const TransDesc& t : desc.subgraphs[s].children) {

@@ -9,6 +9,7 @@ const char* link_keyword(LinkKind kind) {
         case LinkKind::Mastersubgraph: return "mastersubgraph";
         case LinkKind::Trans: return "trans";
         case LinkKind::Subgraph: return "subgraph";
+        case LinkKind::ImplicitRoot: return "the top-level trans blocks";
     }
     return "?";
 }

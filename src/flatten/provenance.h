@@ -17,8 +17,10 @@
 
 namespace whitted {
 
-enum class LinkKind : unsigned char { Mastersubgraph, Trans, Subgraph };
-const char* link_keyword(LinkKind kind);  // "mastersubgraph", "trans", "subgraph"
+// ImplicitRoot: a Brown/Tufts file's top-level trans blocks, the root no line names (§9.4).
+enum class LinkKind : unsigned char { Mastersubgraph, Trans, Subgraph, ImplicitRoot };
+const char* link_keyword(LinkKind kind);  // "mastersubgraph", "trans", "subgraph", "the top-level trans blocks"
+
 
 // One line of a chain, resolved for reading.
 struct ChainLink {

@@ -402,6 +402,7 @@ private:
                 implicit_root_.emplace();
                 implicit_root_->name = "root";
                 implicit_root_->loc = dialect_loc_;
+                implicit_root_->implicit = true;
             }
             subgraph_index_.emplace("root", static_cast<int>(scene_.subgraphs.size()));
             scene_.subgraphs.push_back(std::move(*implicit_root_));
@@ -456,6 +457,7 @@ private:
             implicit_root_.emplace();
             implicit_root_->name = "root";
             implicit_root_->loc = loc(t);
+            implicit_root_->implicit = true;
         }
         SubgraphDesc discarded;  // read on to find the file's other errors, then dropped
         parse_trans(t, ok ? *implicit_root_ : discarded);

@@ -99,6 +99,7 @@ struct SubgraphDesc {
     std::string name;
     std::vector<TransDesc> children;
     SourceLoc loc;
+    bool implicit = false;  // Brown/Tufts: the top-level trans blocks (§9.4); loc is the first one
 };
 
 struct SceneDescription {

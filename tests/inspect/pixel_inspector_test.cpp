@@ -267,5 +267,31 @@ TEST(PixelInspector, ReportTextNamesLinesRelativeToTheSceneFolder) {
     EXPECT_EQ(display_loc(SourceLoc{}, "/a/b"), "(not from a file)");
 }
 
+// A Brown/Tufts file (§9.4) has no mastersubgraph line: its root is the top-level trans blocks,
+// and the chain says so instead of naming a `mastersubgraph root` the file does not have.
+TEST(PixelInspector, BrownTuftsChainStartsAtTheTopLevelTransBlocks) {
+    const char* text =
+        "camera [ eye 0 0 5 focus 0 0 0 up 0 1 0 angle 30 ]\n"  // line 1
+        "light [ number 0 position 0 0 5 ]\n"                   // line 2
+        "trans [ translate 9 0 0 object cube [ ] ]\n"           // line 3: off to the side
+        "trans [ object sphere [ diffuse 1 0 0 ] ]\n";          // line 4: in the middle
+    LoadResult loaded = load_scene_text(text, "brown.sc");
+    ASSERT_TRUE(loaded.ok()) << (loaded.diagnostics.empty() ? "" : loaded.diagnostics[0].str());
+    RenderJob j;
+    j.width = j.height = 9;
+    const PixelReport r = inspect_pixel(*loaded.scene, j, 4, 4);
+    ASSERT_TRUE(r.hit);
+    EXPECT_EQ(r.hit->object.kind, ShapeKind::Sphere);
+    const std::vector<ChainLink>& chain = r.hit->object.chain;
+    ASSERT_EQ(chain.size(), 2u);
+    expect_link(chain[0], LinkKind::ImplicitRoot, "", {3, 1});
+    expect_link(chain[1], LinkKind::Trans, "", {4, 1});
+    const std::string report = report_text(r, "");
+    EXPECT_NE(report.find("  in the top-level trans blocks at brown.sc:3:1\n  in trans at brown.sc:4:1\n"),
+              std::string::npos)
+        << report;
+    EXPECT_EQ(report.find("mastersubgraph"), std::string::npos) << report;
+}
+
 }  // namespace
 }  // namespace whitted
