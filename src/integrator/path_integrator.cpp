@@ -63,7 +63,7 @@ glm::vec3 PathIntegrator::next_event(const Vertex& v, int bounce, const SampleKe
         const float u_triangle = scene_.flat.instances[light].kind == ShapeKind::Mesh
                                      ? sampler.get2d(key, dimension::path(bounce, dimension::kPathLightTriangle)).x
                                      : 0.0f;
-        const AreaLightSample ls = lights_.sample_area(light, u, u_triangle);
+        const AreaLightSample ls = lights_.sample_area(light, x, u, u_triangle);
         glm::vec3 to = ls.point - x;
         const float d2 = glm::dot(to, to), d = std::sqrt(d2);
         if (!(d > 0.0f)) return glm::vec3(0.0f);
@@ -128,7 +128,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
                 const glm::vec3 n_light = normal_to_world(scene_.flat.instances[hit.instance], s.object_normal);
                 const float cos_light = std::abs(glm::dot(n_light, wo));
                 const float pdf_light = lights_.choice_probability(hit.instance) *
-                                        lights_.pdf_area(hit.instance, s.object_normal) * d2 / std::max(cos_light, 1e-12f);
+                                        lights_.pdf_area(hit.instance, from, s.object_normal) * d2 / std::max(cos_light, 1e-12f);
                 radiance += beta * m.emit * power_heuristic(bsdf_pdf, pdf_light);
             }
         }

@@ -44,6 +44,7 @@ PathLights::PathLights(const Scene& scene) : scene_(scene) {
     const FlatScene& flat = scene.flat;
     std::vector<float> power;
     mesh_sampler_of_.assign(flat.instances.size(), -1);
+    cube_of_.assign(flat.instances.size(), -1);
     for (std::uint32_t i = 0; i < flat.instances.size(); ++i) {
         const glm::vec3& e = scene.material(i).emit;
         if (std::max(e.x, std::max(e.y, e.z)) <= 0.0f) continue;
@@ -58,6 +59,10 @@ PathLights::PathLights(const Scene& scene) : scene_(scene) {
             continue;
         }
         if (unit_shape_area(inst.kind) <= 0.0f) continue;  // no unit shape without a sampler
+        if (inst.kind == ShapeKind::Cube) {
+            cube_of_[i] = std::int32_t(cubes_.size());
+            cubes_.emplace_back(inst);
+        }
         lights_.push_back({std::int32_t(i), -1});
         power.push_back(std::max(1e-12f, luminance(e) * world_area(flat.instances[i]) * kPi));
     }
@@ -91,21 +96,27 @@ const PathLight& PathLights::choose(float u, float& prob) const {
 
 float PathLights::choice_probability(std::uint32_t instance) const { return instance_choice_[instance]; }
 
-AreaLightSample PathLights::sample_area(std::uint32_t instance, glm::vec2 u, float u_triangle) const {
+AreaLightSample PathLights::sample_area(std::uint32_t instance, const glm::vec3& x, glm::vec2 u, float u_triangle) const {
     if (const std::int32_t m = mesh_sampler_of_[instance]; m >= 0) {
         const AreaSample s = mesh_samplers_[std::size_t(m)].sample({u_triangle, u.x, u.y});
+        return {s.point, s.normal, s.pdf_area};
+    }
+    if (const std::int32_t c = cube_of_[instance]; c >= 0) {
+        const CubeLight::Sample s = cubes_[std::size_t(c)].sample(x, u);
         return {s.point, s.normal, s.pdf_area};
     }
     const Instance& inst = scene_.flat.instances[instance];
     const ShapeSample s = sample_unit_shape(inst.kind, u);
     const glm::vec3 n_object = unit_shape_normal(inst.kind, s.part, s.p);
     const glm::mat4 m = object_to_world(inst);
-    return {glm::vec3(m * glm::vec4(s.p, 1.0f)), normal_to_world(inst, n_object), pdf_area(instance, n_object)};
+    return {glm::vec3(m * glm::vec4(s.p, 1.0f)), normal_to_world(inst, n_object), pdf_area(instance, x, n_object)};
 }
 
-float PathLights::pdf_area(std::uint32_t instance, const glm::vec3& n_object) const {
+float PathLights::pdf_area(std::uint32_t instance, const glm::vec3& x, const glm::vec3& n_object) const {
     if (const std::int32_t m = mesh_sampler_of_[instance]; m >= 0)
         return 1.0f / mesh_samplers_[std::size_t(m)].total_area();
+    if (const std::int32_t c = cube_of_[instance]; c >= 0)
+        return cubes_[std::size_t(c)].pdf_area(x, CubeLight::face_of(n_object));
     const Instance& inst = scene_.flat.instances[instance];
     return 1.0f / (unit_shape_area(inst.kind) * area_scale(inst, unit_shape_area_normal(inst.kind, n_object)));
 }

@@ -2,8 +2,8 @@
 // The lights of the path tracer (scene-format.md §9.2): every instance whose material has `emit` is
 // an area light, sampled by area in object space with the density converted through the
 // instance's matrix (exact under any affine map: an object-space area element dA becomes
-// |det M| · |M⁻ᵀ n| dA in the world); point, spot and directional lights by next-event estimation
-// only. An emissive mesh (§9.3) is sampled by world triangle area, with the density 1 / its world
+// |det M| · |M⁻ᵀ n| dA in the world); a cube only on the faces the shading point can see
+// (integrator/cube_light.h); point, spot and directional lights by next-event estimation only. An emissive mesh (§9.3) is sampled by world triangle area, with the density 1 / its world
 // area everywhere on it (mesh/mesh_area_sampler.h, one table per emissive mesh instance). One light
 // is chosen per estimate, in proportion to its power.
 #include <cstdint>
@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "accel/scene.h"
+#include "integrator/cube_light.h"
 #include "mesh/mesh_area_sampler.h"
 
 namespace whitted {
@@ -37,13 +38,14 @@ public:
     // The probability of choosing the area light on `instance` (0 if it emits nothing).
     float choice_probability(std::uint32_t instance) const;
 
-    // A point of the instance's shape (uniform by object-space area; the ellipsoid's, uniform on the
-    // sphere it is mapped from) and its world-area density; on a mesh, uniform by world area
-    // (u_triangle picks the triangle, u the point in it).
-    AreaLightSample sample_area(std::uint32_t instance, glm::vec2 u, float u_triangle = 0.0f) const;
-    // The world-area density of sample_area at a point of the instance whose object-space normal
-    // is n_object (the same density it sampled with; a mesh's does not depend on the point).
-    float pdf_area(std::uint32_t instance, const glm::vec3& n_object) const;
+    // A point of the instance's shape to light the shading point x with, and its world-area
+    // density: on a cube, on the faces x can see (CubeLight); on the other unit shapes, uniform by
+    // object-space area (the ellipsoid's, uniform on the sphere it is mapped from); on a mesh,
+    // uniform by world area (u_triangle picks the triangle, u the point in it).
+    AreaLightSample sample_area(std::uint32_t instance, const glm::vec3& x, glm::vec2 u, float u_triangle = 0.0f) const;
+    // The world-area density of sample_area from x at a point of the instance whose object-space
+    // normal is n_object (the same density it samples with; only a cube's depends on x).
+    float pdf_area(std::uint32_t instance, const glm::vec3& x, const glm::vec3& n_object) const;
     // The instance's world surface area (by quadrature of the area element: exact for flat parts).
     static float world_area(const Instance& inst);
 
@@ -54,6 +56,8 @@ private:
     std::vector<float> instance_choice_;  // per instance: the probability of choosing it (0 = not a light)
     std::vector<MeshAreaSampler> mesh_samplers_;
     std::vector<std::int32_t> mesh_sampler_of_;  // per instance: into mesh_samplers_, or -1
+    std::vector<CubeLight> cubes_;
+    std::vector<std::int32_t> cube_of_;  // per instance: into cubes_, or -1
 };
 
 }  // namespace whitted

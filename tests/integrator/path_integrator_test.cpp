@@ -135,14 +135,14 @@ TEST(PathLights, AreaDensityIntegratesToOneUnderNonUniformScale) {
             const glm::vec3 p_obj = to_object_space(inst, Ray{inside, w}).at(hit.t);
             const glm::vec3 n_obj = unit_shape_normal(kind, hit.part, p_obj);
             const glm::vec3 n_world = normal_to_world(inst, n_obj);
-            const double pdf_w = lights.pdf_area(0, n_obj) * hit.t * hit.t / std::abs(glm::dot(n_world, w));
+            const double pdf_w = lights.pdf_area(0, inside, n_obj) * hit.t * hit.t / std::abs(glm::dot(n_world, w));
             terms.push_back(4 * kPi * pdf_w);
         }
         const Stats s = stats_of(terms);
         EXPECT_NEAR(s.mean, 1.0, 4 * s.se + 1e-3) << shape_name(kind);
         // And the points it samples lie on the surface, where the density says.
         for (int i = 0; i < 64; ++i) {
-            const AreaLightSample ls = lights.sample_area(0, sampler.get2d({1, 0, std::uint32_t(i)}, 5));
+            const AreaLightSample ls = lights.sample_area(0, inside, sampler.get2d({1, 0, std::uint32_t(i)}, 5));
             const glm::vec3 back = to_object_space(inst, Ray{ls.point, glm::vec3(0)}).origin;
             const auto span = intersect_unit_shape(kind, Ray{back - 0.01f * glm::vec3(1, 1, 1), glm::vec3(1, 1, 1)});
             ASSERT_EQ(span.count, 2) << shape_name(kind);
