@@ -44,21 +44,28 @@ void build_mesh_bvh(TriangleMesh& mesh, int threads) {
 
 bool mesh_intersect_nearest(const TriangleMesh& mesh, const Ray& ray, float t_min, float t_max, MeshHit& hit) {
     const WatertightRay wr(ray);
+    const WatertightRay4 wr4(wr);
     const TriangleIndices* tris = mesh.triangles.data();
     const glm::vec3* p = mesh.positions.data();
     float best = t_max;
     float limit = t_max;  // up to `best` inclusive once found, for the tie rule: an equal t from a lower index wins
     bool found = false;
     bvh_detail::walk_nearest(mesh.bvh, ray, t_min, best, [&](std::uint32_t first, std::uint32_t end) {
-        for (std::uint32_t i = first; i < end; ++i) {
-            const TriangleIndices& c = tris[i];
-            TriangleHit h;
-            if (!intersect_triangle(wr, p[c[0]], p[c[1]], p[c[2]], t_min, limit, h)) continue;
-            if (!found || h.t < best || i < hit.triangle) {
-                best = h.t;
-                limit = std::nextafter(best, t_max);
-                hit = {h.t, h.u, h.v, i};
-                found = true;
+        for (std::uint32_t g = first; g < end; g += 4) {
+            Triangle4Hits h;
+            int mask = intersect_triangles4(wr4, p, tris, g, end - g < 4 ? end - g : 4, t_min, limit, h);
+            // In index order, as one triangle at a time: a hit must still beat the limit its
+            // predecessors in the group have lowered.
+            for (; mask != 0; mask &= mask - 1) {
+                const int j = __builtin_ctz(unsigned(mask));
+                const std::uint32_t i = g + std::uint32_t(j);
+                if (!(h.t[j] < limit)) continue;
+                if (!found || h.t[j] < best || i < hit.triangle) {
+                    best = h.t[j];
+                    limit = std::nextafter(best, t_max);
+                    hit = {h.t[j], h.u[j], h.v[j], i};
+                    found = true;
+                }
             }
         }
     });
