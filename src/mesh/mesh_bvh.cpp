@@ -7,10 +7,13 @@
 namespace whitted {
 namespace {
 
-// SAH costs for triangles: a traversal step weighed as two triangle tests, leaves of up to eight.
-// Against (1, 4) on the 1M-triangle bench mesh (bench/RESULTS.md): 40 instead of 54 bytes per
-// triangle with the mesh, a faster build, primary rays as fast or faster.
-constexpr BvhBuildCosts kTriangleCosts{2.0f, 8};
+// SAH costs for triangles, tested four at a time (watertight_triangle4.h): a leaf costs its
+// count rounded up to whole groups of four, a traversal step two such groups; leaves of up to
+// eight. Against counting single triangles (2.0, 8, block 1) on the 1M-triangle bench mesh
+// (bench/RESULTS.md): less than half as many nodes (leaves of about four triangles, not two),
+// 28 instead of 40 bytes per triangle with the mesh, a faster build, rays as fast or faster; and
+// against traversal costs 0.5 to 4 and leaves of 4 to 16, as fast or faster within the noise.
+constexpr BvhBuildCosts kTriangleCosts{2.0f, 8, 4};
 
 template <class T>
 void permute(std::vector<T>& v, const std::vector<std::uint32_t>& order) {

@@ -45,7 +45,7 @@ struct WatertightRay4 {
 
 // Triangles tris[first], …, tris[first + count − 1] (1 ≤ count ≤ 4) against the ray, t in
 // (t_min, t_max): bit j of the result says triangle first + j is hit, at out.t[j], out.u[j], out.v[j].
-inline int intersect_triangles4(const WatertightRay4& r4, const glm::vec3* p, const TriangleIndices* tris,
+[[gnu::always_inline]] inline int intersect_triangles4(const WatertightRay4& r4, const glm::vec3* p, const TriangleIndices* tris,
                                 std::uint32_t first, std::uint32_t count, float t_min, float t_max,
                                 Triangle4Hits& out) {
     const WatertightRay& r = r4.r;
@@ -117,7 +117,7 @@ struct WatertightRay4 {
     explicit WatertightRay4(const WatertightRay& ray) : r(ray) {}
 };
 
-inline int intersect_triangles4(const WatertightRay4& r4, const glm::vec3* p, const TriangleIndices* tris,
+[[gnu::always_inline]] inline int intersect_triangles4(const WatertightRay4& r4, const glm::vec3* p, const TriangleIndices* tris,
                                 std::uint32_t first, std::uint32_t count, float t_min, float t_max,
                                 Triangle4Hits& out) {
     int mask = 0;
