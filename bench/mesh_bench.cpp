@@ -1,6 +1,6 @@
 // Triangle meshes, whitted against Embree 3 on the same triangles and the same rays (issue 16).
 // One engine and one scene per process, so that each process's peak memory is its own:
-//   mesh_bench --engine whitted|embree --scene big|instances --threads 1|2
+//   mesh_bench --engine whitted|embree --scene big|instances --threads 1|2 [--passes 4]
 // Scenes (generated here, deterministic):
 //   big:       one displaced UV sphere of 1,000,000 triangles (shared vertices), camera at 4 radii.
 //   instances: a 10,000-triangle displaced sphere instanced 10,000 times (100 × 100 grid, random
@@ -16,6 +16,7 @@
 #include <sys/resource.h>
 #include <time.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -147,7 +148,7 @@ struct Result {
     double primary_per_cpu_s = 0, shadow_per_cpu_s = 0;  // rays per CPU second of the workers
 };
 
-constexpr int kPasses = 4;
+int passes_option = 4;  // --passes: more for a profiler
 
 // Shadow rays from every primary hit toward the light (origin nudged off the surface).
 struct ShadowRay {
@@ -175,11 +176,11 @@ Result run_whitted(Setup& s, const std::vector<Ray>& rays, int threads) {
                               scene.bvh.nodes.capacity() * sizeof(Bvh4Node)) / 1e6;
     std::vector<Hit> hits(rays.size());
     std::vector<char> found(rays.size());
-    const Timing tp = run_parallel(rays.size(), threads, kPasses, [&](std::size_t b, std::size_t e) {
+    const Timing tp = run_parallel(rays.size(), threads, passes_option, [&](std::size_t b, std::size_t e) {
         for (std::size_t i = b; i < e; ++i) found[i] = scene.intersect(rays[i], hits[i]);
     });
-    res.primary_per_s = kPasses * double(rays.size()) / tp.wall;
-    res.primary_per_cpu_s = kPasses * double(rays.size()) / tp.cpu;
+    res.primary_per_s = passes_option * double(rays.size()) / tp.wall;
+    res.primary_per_cpu_s = passes_option * double(rays.size()) / tp.cpu;
     std::vector<ShadowRay> shadow;
     for (std::size_t i = 0; i < rays.size(); ++i)
         if (found[i]) {
@@ -188,11 +189,11 @@ Result run_whitted(Setup& s, const std::vector<Ray>& rays, int threads) {
         }
     res.hit_fraction = double(shadow.size()) / double(rays.size());
     std::vector<char> blocked(shadow.size());
-    const Timing ts = run_parallel(shadow.size(), threads, kPasses, [&](std::size_t b, std::size_t e) {
+    const Timing ts = run_parallel(shadow.size(), threads, passes_option, [&](std::size_t b, std::size_t e) {
         for (std::size_t i = b; i < e; ++i) blocked[i] = scene.occluded(shadow[i].ray, shadow[i].t_max);
     });
-    res.shadow_per_s = kPasses * double(shadow.size()) / ts.wall;
-    res.shadow_per_cpu_s = kPasses * double(shadow.size()) / ts.cpu;
+    res.shadow_per_s = passes_option * double(shadow.size()) / ts.wall;
+    res.shadow_per_cpu_s = passes_option * double(shadow.size()) / ts.cpu;
     std::size_t lit = 0;
     for (char c : blocked) lit += !c;
     res.lit_fraction = double(lit) / double(std::max<std::size_t>(1, shadow.size()));
@@ -235,7 +236,7 @@ Result run_embree(Setup& s, const std::vector<Ray>& rays, int threads) {
     res.peak_delta_mb = peak_rss_mb() - peak0;
     res.structure_mb = 0;  // Embree does not say; see the RSS figures
     std::vector<float> hit_t(rays.size());
-    const Timing tp = run_parallel(rays.size(), threads, kPasses, [&](std::size_t b, std::size_t e) {
+    const Timing tp = run_parallel(rays.size(), threads, passes_option, [&](std::size_t b, std::size_t e) {
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         for (std::size_t i = b; i < e; ++i) {
@@ -251,8 +252,8 @@ Result run_embree(Setup& s, const std::vector<Ray>& rays, int threads) {
             hit_t[i] = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID ? rh.ray.tfar : -1.0f;
         }
     });
-    res.primary_per_s = kPasses * double(rays.size()) / tp.wall;
-    res.primary_per_cpu_s = kPasses * double(rays.size()) / tp.cpu;
+    res.primary_per_s = passes_option * double(rays.size()) / tp.wall;
+    res.primary_per_cpu_s = passes_option * double(rays.size()) / tp.cpu;
     std::vector<ShadowRay> shadow;
     for (std::size_t i = 0; i < rays.size(); ++i)
         if (hit_t[i] >= 0.0f) {
@@ -261,7 +262,7 @@ Result run_embree(Setup& s, const std::vector<Ray>& rays, int threads) {
         }
     res.hit_fraction = double(shadow.size()) / double(rays.size());
     std::vector<char> blocked(shadow.size());
-    const Timing ts = run_parallel(shadow.size(), threads, kPasses, [&](std::size_t b, std::size_t e) {
+    const Timing ts = run_parallel(shadow.size(), threads, passes_option, [&](std::size_t b, std::size_t e) {
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         for (std::size_t i = b; i < e; ++i) {
@@ -275,8 +276,8 @@ Result run_embree(Setup& s, const std::vector<Ray>& rays, int threads) {
             blocked[i] = r.tfar < 0.0f;  // Embree sets tfar = -inf when occluded
         }
     });
-    res.shadow_per_s = kPasses * double(shadow.size()) / ts.wall;
-    res.shadow_per_cpu_s = kPasses * double(shadow.size()) / ts.cpu;
+    res.shadow_per_s = passes_option * double(shadow.size()) / ts.wall;
+    res.shadow_per_cpu_s = passes_option * double(shadow.size()) / ts.cpu;
     std::size_t lit = 0;
     for (char c : blocked) lit += !c;
     res.lit_fraction = double(lit) / double(std::max<std::size_t>(1, shadow.size()));
@@ -296,8 +297,9 @@ int main(int argc, char** argv) {
         if (k == "--engine") engine = v;
         else if (k == "--scene") scene = v;
         else if (k == "--threads") threads = std::stoi(v);
+        else if (k == "--passes") passes_option = std::max(1, std::stoi(v));
         else {
-            std::fprintf(stderr, "usage: mesh_bench --engine whitted|embree --scene big|instances --threads N\n");
+            std::fprintf(stderr, "usage: mesh_bench --engine whitted|embree --scene big|instances --threads N [--passes P]\n");
             return 2;
         }
     }

@@ -118,6 +118,8 @@ void build_subtree(std::vector<PrimRef>& refs, const Task& root, std::vector<Bin
                    std::uint32_t defer_below, std::vector<Task>* deferred, const BvhBuildCosts& costs) {
     const float traversal_cost = costs.traversal_cost;
     const std::uint32_t max_leaf = costs.max_leaf;
+    const std::uint32_t block = costs.block;
+    auto blocks = [block](std::uint32_t n) { return float((n + block - 1) / block); };
     std::vector<Task> stack{root};
     while (!stack.empty()) {
         const Task task = stack.back();
@@ -180,7 +182,7 @@ void build_subtree(std::vector<PrimRef>& refs, const Task& root, std::vector<Bin
             for (int i = kBins - 1; i > 0; --i) {
                 acc.grow(bins[i].box);
                 acc_n += bins[i].count;
-                right_cost[i] = acc.area() * float(acc_n);
+                right_cost[i] = acc.area() * blocks(acc_n);
             }
             float best = kInf;
             int best_split = -1;
@@ -189,10 +191,10 @@ void build_subtree(std::vector<PrimRef>& refs, const Task& root, std::vector<Bin
             for (int i = 0; i < kBins - 1; ++i) {
                 acc.grow(bins[i].box);
                 acc_n += bins[i].count;
-                const float cost = acc.area() * float(acc_n) + right_cost[i + 1];
+                const float cost = acc.area() * blocks(acc_n) + right_cost[i + 1];
                 if (acc_n > 0 && acc_n < count && cost < best) { best = cost; best_split = i + 1; }
             }
-            const float leaf_cost = float(count);
+            const float leaf_cost = blocks(count);
             const float area = box.area();
             const float split_cost = traversal_cost + (area > 0.0f ? best / area : leaf_cost);
             if (best_split < 0 || (split_cost >= leaf_cost && count <= max_leaf)) {

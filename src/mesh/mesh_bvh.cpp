@@ -7,10 +7,13 @@
 namespace whitted {
 namespace {
 
-// SAH costs for triangles: a traversal step weighed as two triangle tests, leaves of up to eight.
-// Against (1, 4) on the 1M-triangle bench mesh (bench/RESULTS.md): 40 instead of 54 bytes per
-// triangle with the mesh, a faster build, primary rays as fast or faster.
-constexpr BvhBuildCosts kTriangleCosts{2.0f, 8};
+// SAH costs for triangles, tested four at a time (watertight_triangle4.h): a leaf costs its
+// count rounded up to whole groups of four, a traversal step two such groups; leaves of up to
+// eight. Against counting single triangles (2.0, 8, block 1) on the 1M-triangle bench mesh
+// (bench/RESULTS.md): less than half as many nodes (leaves of about four triangles, not two),
+// 28 instead of 40 bytes per triangle with the mesh, a faster build, rays as fast or faster; and
+// against traversal costs 0.5 to 4 and leaves of 4 to 16, as fast or faster within the noise.
+constexpr BvhBuildCosts kTriangleCosts{2.0f, 8, 4};
 
 template <class T>
 void permute(std::vector<T>& v, const std::vector<std::uint32_t>& order) {
@@ -44,21 +47,28 @@ void build_mesh_bvh(TriangleMesh& mesh, int threads) {
 
 bool mesh_intersect_nearest(const TriangleMesh& mesh, const Ray& ray, float t_min, float t_max, MeshHit& hit) {
     const WatertightRay wr(ray);
+    const WatertightRay4 wr4(wr);
     const TriangleIndices* tris = mesh.triangles.data();
     const glm::vec3* p = mesh.positions.data();
     float best = t_max;
     float limit = t_max;  // up to `best` inclusive once found, for the tie rule: an equal t from a lower index wins
     bool found = false;
     bvh_detail::walk_nearest(mesh.bvh, ray, t_min, best, [&](std::uint32_t first, std::uint32_t end) {
-        for (std::uint32_t i = first; i < end; ++i) {
-            const TriangleIndices& c = tris[i];
-            TriangleHit h;
-            if (!intersect_triangle(wr, p[c[0]], p[c[1]], p[c[2]], t_min, limit, h)) continue;
-            if (!found || h.t < best || i < hit.triangle) {
-                best = h.t;
-                limit = std::nextafter(best, t_max);
-                hit = {h.t, h.u, h.v, i};
-                found = true;
+        for (std::uint32_t g = first; g < end; g += 4) {
+            Triangle4Hits h;
+            int mask = intersect_triangles4(wr4, p, tris, g, end - g < 4 ? end - g : 4, t_min, limit, h);
+            // In index order, as one triangle at a time: a hit must still beat the limit its
+            // predecessors in the group have lowered.
+            for (; mask != 0; mask &= mask - 1) {
+                const int j = __builtin_ctz(unsigned(mask));
+                const std::uint32_t i = g + std::uint32_t(j);
+                if (!(h.t[j] < limit)) continue;
+                if (!found || h.t[j] < best || i < hit.triangle) {
+                    best = h.t[j];
+                    limit = std::nextafter(best, t_max);
+                    hit = {h.t[j], h.u[j], h.v[j], i};
+                    found = true;
+                }
             }
         }
     });

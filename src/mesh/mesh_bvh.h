@@ -7,6 +7,7 @@
 #include "accel/bvh_walk.h"
 #include "mesh/triangle_mesh.h"
 #include "mesh/watertight_triangle.h"
+#include "mesh/watertight_triangle4.h"
 
 namespace whitted {
 
@@ -33,13 +34,15 @@ bool mesh_intersect_nearest_brute_force(const TriangleMesh& mesh, const Ray& ray
 template <class Visit>
 bool mesh_for_each_crossing(const TriangleMesh& mesh, const Ray& ray, float t_min, float t_max, Visit&& visit) {
     const WatertightRay wr(ray);
+    const WatertightRay4 wr4(wr);
     const TriangleIndices* tris = mesh.triangles.data();
     const glm::vec3* p = mesh.positions.data();
     return bvh_detail::walk_any<true>(mesh.bvh, ray, t_min, t_max, [&](std::uint32_t first, std::uint32_t end) {
-        for (std::uint32_t i = first; i < end; ++i) {
-            TriangleHit h;
-            const TriangleIndices& c = tris[i];
-            if (intersect_triangle(wr, p[c[0]], p[c[1]], p[c[2]], t_min, t_max, h) && !visit(i)) return false;
+        for (std::uint32_t g = first; g < end; g += 4) {  // four at a time, each group's hits in index order
+            Triangle4Hits h;
+            int mask = intersect_triangles4(wr4, p, tris, g, end - g < 4 ? end - g : 4, t_min, t_max, h);
+            for (; mask != 0; mask &= mask - 1)
+                if (!visit(g + std::uint32_t(__builtin_ctz(unsigned(mask))))) return false;
         }
         return true;
     });
