@@ -713,10 +713,74 @@ TEST_F(ViewerE2E, TheWindowKeepsUpdatingWhileTheSaveDialogIsOpen) {
     ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready& n) { return n.state == "finished"; }, 120s))
         << "the render's end was not seen while the dialog was open:\n" << viewer.output();
     EXPECT_FALSE(xdotool(x.display(), "search --name 'Save image as'").empty());  // still open
-    // Quitting with the dialog open saves nothing (its name field still holds the suggested name).
+
+    // Saved now, it is the finished image, as whitted renders it, and no word of it being partial.
+    xdotool(x.display(), "windowfocus --sync " + dialog + " key Return");
+    const std::string png = dir_ + "/showcase.png";
+    ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready& n) {
+        return n.labels.count("message") && n.labels.at("message").find("saved") != std::string::npos;
+    }, 20s))
+        << viewer.output();
+    EXPECT_EQ(drawn_text(r.labels["message"]), " saved " + png);
+    Image saved, expected;
+    ASSERT_EQ(read_image(png, saved), "") << viewer.output();
+    auto cli = run_process({test::cli_path(), scene, "-o", dir_ + "/cli.png", "--width", "320", "--height", "240",
+                            "--spp", "16", "-q"});
+    ASSERT_EQ(cli.exit_code, 0) << cli.output;
+    ASSERT_EQ(read_image(dir_ + "/cli.png", expected), "");
+    EXPECT_TRUE(saved.rgb == expected.rgb) << "see " << png << " and " << dir_ << "/cli.png";
+
+    // Quitting with the dialog open saves nothing (its name field still holds a name).
+    xdotool(x.display(), "windowfocus --sync " + window + " key ctrl+s");
+    const std::string again = xdotool(x.display(), "search --sync --name 'Save image as'");
+    xdotool(x.display(), "windowfocus --sync " + again + " type later.png");
     viewer.signal(SIGTERM);
     EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
-    EXPECT_FALSE(fs::exists(dir_ + "/showcase.png"));
+    EXPECT_FALSE(fs::exists(dir_ + "/later.png"));
+}
+
+// Saved while a render runs, the image is the one on screen then, and the message says it is
+// partial (issue 15, item 14).
+TEST_F(ViewerE2E, SavingWhileRenderingSaysTheImageIsPartial) {
+    Xvfb x;
+    std::string why;
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xdotool"}));
+    const std::string ready = dir_ + "/ready.txt", scene = dir_ + "/showcase.sc", png = dir_ + "/showcase.png";
+    fs::copy_file(std::string(WHITTED_SOURCE_DIR) + "/scenes/showcase.sc", scene);
+    Child viewer({WHITTED_VIEWER_PATH, scene, "--width", "160", "--height", "120", "--threads", "2", "--ready-file",
+                  ready},
+                 dir_ + "/viewer.log",
+                 {{"DISPLAY", x.display()}, {"HOME", dir_}, {"ASAN_OPTIONS", asan_options_for_viewer()}});
+    Ready r;
+    ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer.output();
+    // A render of minutes: 4096 samples a pixel (Render > Samples per pixel, then F5), stopped by
+    // the quit at the end.
+    const std::string window = xdotool(x.display(), "search --name whitted-view");
+    xdotool(x.display(), "windowfocus --sync " + window + " key alt+r p");
+    xdotool(x.display(), "search --sync --name '^Samples per pixel$'");
+    xdotool(x.display(), "key End shift+Home");
+    xdotool(x.display(), "type 4096");
+    xdotool(x.display(), "key Return");
+    xdotool(x.display(), "windowfocus --sync " + window + " key F5");
+    ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready& n) {
+        return n.labels.count("progress") && n.labels.at("progress").find("of 4096 samples") != std::string::npos;
+    }, 30s)) << viewer.output();
+
+    xdotool(x.display(), "windowfocus --sync " + window + " key ctrl+s");
+    const std::string dialog = xdotool(x.display(), "search --sync --name 'Save image as'");
+    xdotool(x.display(), "windowfocus --sync " + dialog + " key Return");
+    ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready& n) {
+        return n.labels.count("message") && n.labels.at("message").find("saved") != std::string::npos;
+    }, 20s))
+        << viewer.output();
+    EXPECT_EQ(drawn_text(r.labels["message"]), " saved " + png + " while still rendering: the image is partial");
+    Image saved;
+    ASSERT_EQ(read_image(png, saved), "") << viewer.output();
+    EXPECT_EQ(saved.width, 160);
+    viewer.signal(SIGTERM);
+    EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
 }
 
 // A one-sphere scene in the given diffuse colour: quick to render, easy to tell apart.
