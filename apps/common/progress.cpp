@@ -27,31 +27,39 @@ void ProgressLine::tile_done() {
     draw(done);
 }
 
-std::string progress_text(double fraction, double elapsed, double eta, int columns) {
+std::string fit_to_width(const std::vector<std::string>& forms, int columns) {
+    for (const std::string& f : forms)
+        if (int(f.size()) < columns) return f;
+    return columns > 1 && !forms.empty() ? forms.back().substr(0, std::size_t(columns - 1)) : "";
+}
+
+int terminal_columns(int fd) {
+    struct winsize size {};
+    return ioctl(fd, TIOCGWINSZ, &size) == 0 && size.ws_col > 0 ? size.ws_col : 80;
+}
+
+std::vector<std::string> progress_forms(double fraction, double elapsed, double eta) {
     char pct[16], el[32], et[32];
     std::snprintf(pct, sizeof pct, "%5.1f%%", 100 * fraction);
     std::snprintf(el, sizeof el, "%.1fs", elapsed);
     std::snprintf(et, sizeof et, "%.1fs", eta);
-    // The longest that fits in columns - 1 (a line that reaches the last column wraps on some
-    // terminals, and "\r" then rewrites only the wrapped part: every update a new line).
-    const std::string forms[] = {
+    return {
         std::string("rendering ") + pct + "  elapsed " + el + "  eta " + et,
         std::string(pct) + "  elapsed " + el + "  eta " + et,
         std::string(pct) + " eta " + et,
         pct,
     };
-    for (const std::string& f : forms)
-        if (int(f.size()) < columns) return f;
-    return columns > 1 ? forms[3].substr(0, std::size_t(columns - 1)) : "";
+}
+
+std::string progress_text(double fraction, double elapsed, double eta, int columns) {
+    return fit_to_width(progress_forms(fraction, elapsed, eta), columns);
 }
 
 void ProgressLine::draw(int done) {
     double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
     double fraction = total_ > 0 ? double(done) / total_ : 1.0;
     double eta = fraction > 0 ? elapsed * (1 - fraction) / fraction : 0;
-    struct winsize size {};
-    const int columns = ioctl(STDERR_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 0 ? size.ws_col : 80;
-    std::fprintf(stderr, "\r\033[K%s", progress_text(fraction, elapsed, eta, columns).c_str());
+    std::fprintf(stderr, "\r\033[K%s", progress_text(fraction, elapsed, eta, terminal_columns(STDERR_FILENO)).c_str());
     std::fflush(stderr);
 }
 

@@ -4,11 +4,22 @@
 #include <chrono>
 #include <mutex>
 #include <string>
+#include <vector>
 
 namespace whitted::cli {
 
-// The line for a terminal `columns` wide: the longest of several forms that leaves the last
-// column free, down to the percentage alone.
+// The first of `forms` (longest first) that leaves the last column of a terminal `columns` wide
+// free, or the last one cut to fit: a line reaching the last column wraps on some terminals, and
+// "\r" then rewrites only the wrapped part (every update a new line).
+std::string fit_to_width(const std::vector<std::string>& forms, int columns);
+
+// The width of the terminal on `fd`; 80 when it is not one or does not say.
+int terminal_columns(int fd);
+
+// The progress line's forms, longest first, down to the percentage alone.
+std::vector<std::string> progress_forms(double fraction, double elapsed, double eta);
+
+// The line for a terminal `columns` wide: the longest of progress_forms() that fits.
 std::string progress_text(double fraction, double elapsed, double eta, int columns);
 
 class ProgressLine {

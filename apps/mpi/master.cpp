@@ -10,6 +10,7 @@
 
 #include "checkpoint.h"
 #include "film/image_io.h"
+#include "progress.h"
 #include "protocol.h"
 #include "ranks.h"
 #include "schedule.h"
@@ -36,11 +37,21 @@ public:
         const auto now = Clock::now();
         if (!last && now - drawn_ < (tty_ ? std::chrono::milliseconds(200) : std::chrono::seconds(10))) return;
         drawn_ = now;
-        const double t = seconds(now - start_), f = total_ ? double(done_) / total_ : 1.0;
-        std::fprintf(stderr, "%stiles %d/%d (%.1f%%)  %.2f Mrays/s  elapsed %.1fs  eta %.1fs  per rank", tty_ ? "\r\033[K" : "",
-                     done_, total_, 100 * f, t > 0 ? double(rays_) / t * 1e-6 : 0.0, t, f > 0 ? t * (1 - f) / f : 0.0);
-        for (int n : per_rank_) std::fprintf(stderr, " %d", n);
-        std::fprintf(stderr, tty_ ? "" : "\n");
+        const double t = seconds(now - start_), f = total_ ? double(done_) / total_ : 1.0, eta = f > 0 ? t * (1 - f) / f : 0.0;
+        char head[160];
+        std::snprintf(head, sizeof head, "tiles %d/%d (%.1f%%)  %.2f Mrays/s  elapsed %.1fs  eta %.1fs", done_, total_,
+                      100 * f, t > 0 ? double(rays_) / t * 1e-6 : 0.0, t, eta);
+        std::string full = std::string(head) + "  per rank";
+        for (int n : per_rank_) full += " " + std::to_string(n);
+        if (tty_) {
+            // On a terminal, fitted to its width (each update wrapping into a new line otherwise):
+            // without the ranks' counts, then whitted's own forms, down to the percentage.
+            std::vector<std::string> forms = {full, head};
+            for (std::string& form : cli::progress_forms(f, t, eta)) forms.push_back(std::move(form));
+            std::fprintf(stderr, "\r\033[K%s", cli::fit_to_width(forms, cli::terminal_columns(STDERR_FILENO)).c_str());
+        } else {
+            std::fprintf(stderr, "%s\n", full.c_str());
+        }
         std::fflush(stderr);
     }
     void finish() {

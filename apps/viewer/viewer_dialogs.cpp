@@ -11,12 +11,12 @@
 #include <FL/Fl_Browser.H>
 #include <FL/Fl_Button.H>
 #include <FL/Fl_Double_Window.H>
-#include <FL/Fl_Native_File_Chooser.H>
 #include <FL/Fl_Return_Button.H>
 #include <FL/fl_ask.H>
 #include <FL/fl_draw.H>
 
 #include "camera_text.h"
+#include "file_chooser.h"
 #include "film/image_io.h"
 #include "viewer_util.h"
 #include "viewer_window.h"
@@ -97,14 +97,11 @@ void ViewerWindow::ask_for_textures(const RenderStatus& st) {
         const int answer = ask_texture_dialog(mt, where, *this);
         if (quitting_) return;
         std::string picked;
-        if (answer == 1) {
-            Fl_Native_File_Chooser chooser;
-            chooser.title(("Texture \"" + mt.name + "\"").c_str());
-            chooser.type(Fl_Native_File_Chooser::BROWSE_FILE);
-            chooser.filter("Images\t*.{bmp,png,jpg,jpeg,ppm,pgm,tga,gif,psd,hdr,pic}\nAll files\t*");
-            chooser.directory(scene_dir().c_str());
-            if (chooser.show() == 0 && chooser.filename()) picked = chooser.filename();
-        }
+        if (answer == 1)
+            picked = choose_file_to_open("Texture \"" + mt.name + "\"",
+                                         "Images (*.{bmp,png,jpg,jpeg,ppm,pgm,tga,gif,psd,hdr,pic})\tAll Files (*)",
+                                         scene_dir())
+                         .path;
         if (quitting_) return;
         if (picked.empty()) {
             declined = true;
@@ -120,12 +117,8 @@ void ViewerWindow::ask_for_textures(const RenderStatus& st) {
 }
 
 void ViewerWindow::choose_and_open() {
-    Fl_Native_File_Chooser chooser;
-    chooser.title("Open scene");
-    chooser.type(Fl_Native_File_Chooser::BROWSE_FILE);
-    chooser.filter("Scenes\t*.sc\nAll files\t*");
-    chooser.directory(scene_dir().c_str());
-    if (chooser.show() == 0 && chooser.filename()) open_scene(chooser.filename());
+    const FileChoice choice = choose_file_to_open("Open scene", "Scenes (*.sc)\tAll Files (*)", scene_dir());
+    if (!choice.path.empty()) open_scene(choice.path);
 }
 
 void ViewerWindow::save_image_as() {
@@ -133,21 +126,15 @@ void ViewerWindow::save_image_as() {
         set_message("error: nothing rendered yet");
         return;
     }
-    Fl_Native_File_Chooser chooser;
-    chooser.title("Save image as");
-    chooser.type(Fl_Native_File_Chooser::BROWSE_SAVE_FILE);
-    chooser.options(Fl_Native_File_Chooser::SAVEAS_CONFIRM | Fl_Native_File_Chooser::NEW_FOLDER);
-    chooser.filter("PNG\t*.png\nBMP\t*.bmp\nPPM\t*.ppm\nJPEG\t*.{jpg,jpeg}");
     // In the scene's folder, named after it.
-    chooser.directory(scene_dir().c_str());
-    std::string suggested = scene_.empty() ? "image.png" : fs::path(scene_).stem().string() + ".png";
-    chooser.preset_file(suggested.c_str());
-    if (chooser.show() != 0 || !chooser.filename()) return;
-    std::string path = chooser.filename();
-    if (fs::path(path).extension().empty()) {
+    const FileChoice choice =
+        choose_file_to_save("Save image as", "PNG (*.png)\tBMP (*.bmp)\tPPM (*.ppm)\tJPEG (*.{jpg,jpeg})", scene_dir(),
+                            scene_.empty() ? "image.png" : fs::path(scene_).stem().string() + ".png");
+    if (choice.path.empty()) return;
+    std::string path = choice.path;
+    if (fs::path(path).extension().empty()) {  // the extension of the filter shown (PNG for All Files)
         static const char* exts[] = {".png", ".bmp", ".ppm", ".jpg"};
-        int f = chooser.filter_value();
-        path += exts[f >= 0 && f < 4 ? f : 0];
+        path += exts[choice.filter >= 0 && choice.filter < 4 ? choice.filter : 0];
     }
     if (!is_supported_output(path)) {
         set_message("error: cannot write '" + path + "': use .png, .bmp, .ppm, .jpg or .jpeg");

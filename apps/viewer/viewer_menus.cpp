@@ -35,6 +35,7 @@ void call(Fl_Widget*, void* v) {
 void ask_spinner(Fl_Spinner* s, const char* what) {
     char current[32];
     std::snprintf(current, sizeof current, "%d", int(s->value()));
+    fl_message_title(what);  // a window named after its question (tests find it by name)
     const char* answer = fl_input("%s (%d to %d):", current, what, int(s->minimum()), int(s->maximum()));
     if (!answer) return;
     char* end = nullptr;

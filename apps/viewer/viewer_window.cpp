@@ -20,7 +20,6 @@
 #include <FL/Fl_Check_Button.H>
 #include <FL/Fl_Choice.H>
 #include <FL/Fl_Menu_Bar.H>
-#include <FL/Fl_Native_File_Chooser.H>
 #include <FL/Fl_Return_Button.H>
 #include <FL/Fl_Spinner.H>
 #include <FL/fl_draw.H>

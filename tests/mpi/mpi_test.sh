@@ -159,5 +159,20 @@ mismatched_ranks)
     "${MPIRUN[@]}" -np 1 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/a.png" : \
         -np 1 "$out/other-build" "$src/scenes/textures.sc" -o "$out/a.png" >"$out/log" 2>&1 && fail "accepted"
     grep -q "rank 1 runs another whitted-mpi executable" "$out/log" || { cat "$out/log"; fail "no message"; } ;;
+narrow_terminal)
+    # Issue 15, finding 13: on a terminal narrower than the progress line each update wrapped into a
+    # new line. Run alone (one rank, no mpirun, whose ranks write into pipes) in a terminal of
+    # 30, 42 and 12 columns, every redraw leaves the last column free and still shows the percentage.
+    for cols in 30 42 12; do
+        script -qfec "stty cols $cols rows 24; exec $(printf '%q ' "$WHITTED_MPI" "$src/scenes/showcase.sc" \
+            -o "$out/mpi.png" --width 300 --height 300 --spp 4 --threads 2)" /dev/null >"$out/log" 2>&1 ||
+            { cat -A "$out/log"; fail "$cols columns: whitted-mpi failed"; }
+        # Each draw starts with carriage return and erase-line, and ends at the next carriage return.
+        tr '\r' '\n' <"$out/log" | sed -n $'s/^\033\\[K//p' | grep -v '^wrote \|^$' >"$out/draws"
+        [[ -s $out/draws ]] || { cat -A "$out/log"; fail "$cols columns: no progress line drawn"; }
+        awk -v cols="$cols" 'length($0) >= cols || !/%/ { print "too wide or no percentage: \"" $0 "\""; bad = 1 }
+            END { exit bad }' "$out/draws" || fail "$cols columns: a line does not fit"
+        echo "ok: $cols columns, $(wc -l <"$out/draws") draws"
+    done ;;
 *) fail "unknown case $case_name" ;;
 esac
