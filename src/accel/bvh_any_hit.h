@@ -14,17 +14,41 @@
 namespace whitted {
 namespace bvh_detail {
 
-// Offers instance i's crossings within (t_min, t_max) to visit; false if it said stop.
+// Offers unit-shape instance i's crossings within (t_min, t_max) to visit; false if it said stop.
+template <class Visit>
+WHITTED_BVH_INLINE bool visit_unit_instance(const Instance& inst, std::uint32_t i, const Ray& ray, float t_min,
+                                            float t_max, Visit& visit) {
+    const auto s = intersect_instance(inst, ray);
+    if (s.count == 0) return true;
+    const int crossings = (s.t[0] > t_min && s.t[0] < t_max) + (s.t[1] > t_min && s.t[1] < t_max);
+    return crossings == 0 || visit(i, crossings);
+}
+
+// The same for any instance: a mesh instance offers each triangle it crosses.
 template <class Visit>
 WHITTED_BVH_INLINE bool visit_instance(const Instance& inst, std::uint32_t i, const std::vector<TriangleMesh>* meshes,
                                        const Ray& ray, float t_min, float t_max, Visit& visit) {
     if (inst.kind == ShapeKind::Mesh)
         return mesh_for_each_crossing((*meshes)[inst.mesh], to_object_space(inst, ray), t_min, t_max,
                                       [&](std::uint32_t) { return visit(i, 1); });
-    const auto s = intersect_instance(inst, ray);
-    if (s.count == 0) return true;
-    const int crossings = (s.t[0] > t_min && s.t[0] < t_max) + (s.t[1] > t_min && s.t[1] < t_max);
-    return crossings == 0 || visit(i, crossings);
+    return visit_unit_instance(inst, i, ray, t_min, t_max, visit);
+}
+
+// for_each_crossing's walk; kMeshes: the scene has mesh instances (else no instance's kind is
+// tested against Mesh).
+template <bool kMeshes, class Visit>
+bool walk_crossings(const Bvh& bvh, const Instance* inst, const std::vector<TriangleMesh>* meshes, const Ray& ray,
+                    float t_min, float t_max, Visit& visit) {
+    return walk_any(bvh, ray, t_min, t_max, [&](std::uint32_t first, std::uint32_t end) WHITTED_BVH_LAMBDA_INLINE {
+        for (std::uint32_t i = first; i < end; ++i) {
+            if constexpr (kMeshes) {
+                if (!visit_instance(inst[i], i, meshes, ray, t_min, t_max, visit)) return false;
+            } else {
+                if (!visit_unit_instance(inst[i], i, ray, t_min, t_max, visit)) return false;
+            }
+        }
+        return true;
+    });
 }
 
 }  // namespace bvh_detail
@@ -36,12 +60,9 @@ WHITTED_BVH_INLINE bool visit_instance(const Instance& inst, std::uint32_t i, co
 template <class Visit>
 bool for_each_crossing(const Bvh& bvh, const std::vector<Instance>& instances, const std::vector<TriangleMesh>* meshes,
                        const Ray& ray, float t_min, float t_max, Visit&& visit) {
-    const Instance* inst = instances.data();
-    return bvh_detail::walk_any(bvh, ray, t_min, t_max, [&](std::uint32_t first, std::uint32_t end) {
-        for (std::uint32_t i = first; i < end; ++i)
-            if (!bvh_detail::visit_instance(inst[i], i, meshes, ray, t_min, t_max, visit)) return false;
-        return true;
-    });
+    if (bvh_detail::has_meshes(meshes))
+        return bvh_detail::walk_crossings<true>(bvh, instances.data(), meshes, ray, t_min, t_max, visit);
+    return bvh_detail::walk_crossings<false>(bvh, instances.data(), meshes, ray, t_min, t_max, visit);
 }
 
 template <class Visit>

@@ -35,6 +35,11 @@ struct BoxRay {
 // boxes entered within (t_min, t_max). Near/far planes are chosen by the direction's sign, so no
 // min/max per axis is needed.
 #ifdef WHITTED_BVH_SSE
+// A query's bound on t as the box test wants it (broadcast): the walks make their constant
+// bounds once per query rather than once per node.
+using BoxLimit = __m128;
+inline BoxLimit box_limit(float t) { return _mm_set1_ps(t); }
+
 struct BoxTester {
     __m128 o[3], inv[3];
     const BoxRay& r;
@@ -44,24 +49,27 @@ struct BoxTester {
             inv[a] = _mm_set1_ps(ray.inv[a]);
         }
     }
-    int test(const Bvh4Node& n, float t_min, float t_max, float t_near[4]) const {
+    int test(const Bvh4Node& n, BoxLimit t_min, BoxLimit t_max, float t_near[4]) const {
         const __m128 nx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.near_row[0]]), o[0]), inv[0]);
         const __m128 ny = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.near_row[1]]), o[1]), inv[1]);
         const __m128 nz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.near_row[2]]), o[2]), inv[2]);
         const __m128 fx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.far_row[0]]), o[0]), inv[0]);
         const __m128 fy = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.far_row[1]]), o[1]), inv[1]);
         const __m128 fz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.far_row[2]]), o[2]), inv[2]);
-        const __m128 enter = _mm_max_ps(_mm_max_ps(nx, ny), _mm_max_ps(nz, _mm_set1_ps(t_min)));
-        const __m128 leave = _mm_min_ps(_mm_min_ps(fx, fy), _mm_min_ps(fz, _mm_set1_ps(t_max)));
+        const __m128 enter = _mm_max_ps(_mm_max_ps(nx, ny), _mm_max_ps(nz, t_min));
+        const __m128 leave = _mm_min_ps(_mm_min_ps(fx, fy), _mm_min_ps(fz, t_max));
         _mm_storeu_ps(t_near, enter);
         return _mm_movemask_ps(_mm_cmple_ps(enter, leave));
     }
 };
 #else
+using BoxLimit = float;
+inline BoxLimit box_limit(float t) { return t; }
+
 struct BoxTester {
     const BoxRay& r;
     explicit BoxTester(const BoxRay& ray) : r(ray) {}
-    int test(const Bvh4Node& n, float t_min, float t_max, float t_near[4]) const {
+    int test(const Bvh4Node& n, BoxLimit t_min, BoxLimit t_max, float t_near[4]) const {
         int mask = 0;
         for (int s = 0; s < 4; ++s) {
             float enter = t_min, leave = t_max;

@@ -240,11 +240,13 @@ inline void offer4(const packet_shapes::Span4& s, std::uint32_t index, int g, un
 
 // Offers instance `index` to the lanes in `mask`: four lanes at a time for the shapes that
 // bvh_packet_shapes.h has, one lane at a time (bvh_ray.h) for the cone, and for a mesh one lane
-// at a time down its own BVH (bvh_mesh_leaf.h), exactly as the single-ray query does.
+// at a time down its own BVH (bvh_mesh_leaf.h), exactly as the single-ray query does. kMeshes: the
+// scene has mesh instances (else no kind is tested against Mesh).
+template <bool kMeshes>
 inline void offer_instance(const Instance& inst, std::uint32_t index, const Ray (&rays)[kPacketSize],
                            const PacketRays& r, unsigned mask, float t_min, float t_max, __m128 tmin, __m128 tmax,
                            const TriangleMesh* meshes, Nearest& nearest) {
-    if (inst.kind == ShapeKind::Mesh) {
+    if (kMeshes && inst.kind == ShapeKind::Mesh) {
         for (unsigned m = mask; m != 0; m &= m - 1) {
             const int l = lowest_bit(m);
             bvh_detail::offer_mesh_nearest(meshes[inst.mesh], inst, rays[l], index, t_min, t_max, nearest.best[l],
@@ -283,7 +285,7 @@ struct alignas(16) Entry {
     unsigned mask;
 };
 
-template <bool kSameSigns, bool kCommonOrigin>
+template <bool kSameSigns, bool kCommonOrigin, bool kMeshes>
 unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const TriangleMesh* meshes,
                   const Ray (&rays)[kPacketSize], const PacketRays& r, unsigned active, float t_min, float t_max,
                   Hit (&hits)[kPacketSize]) {
@@ -380,7 +382,7 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
         } else {
             const std::uint32_t first = Bvh4Node::leaf_first(ref), end = first + Bvh4Node::leaf_count(ref);
             for (std::uint32_t i = first; i < end; ++i)
-                offer_instance(inst[i], i, rays, r, mask, t_min, t_max, tmin, tmax, meshes, nearest);
+                offer_instance<kMeshes>(inst[i], i, rays, r, mask, t_min, t_max, tmin, tmax, meshes, nearest);
         }
         // Pop, dropping the lanes whose nearest hit is now closer than their entry into the box.
         for (;;) {
@@ -388,7 +390,11 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
                 unsigned result = 0;
                 for (int l = 0; l < kPacketSize; ++l)
                     if (nearest.found[l]) {
-                        hits[l] = bvh_detail::make_hit(inst, best[l], nearest.index[l], nearest.part[l], nearest.tri[l]);
+                        if constexpr (kMeshes)
+                            hits[l] = bvh_detail::make_hit(inst, best[l], nearest.index[l], nearest.part[l],
+                                                           nearest.tri[l]);
+                        else
+                            hits[l] = Hit{best[l], nearest.index[l], nearest.part[l]};
                         result |= 1u << l;
                     }
                 return result;
@@ -408,6 +414,18 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
     }
 }
 
+// The walk for the packet's kind of rays (one origin? one sign per axis?).
+template <bool kMeshes>
+unsigned dispatch(const Bvh& bvh, const std::vector<Instance>& instances, const TriangleMesh* m,
+                  const Ray (&rays)[kPacketSize], const PacketRays& r, unsigned active, float t_min, float t_max,
+                  Hit (&hits)[kPacketSize]) {
+    if (r.common_origin)
+        return r.same_signs ? traverse<true, true, kMeshes>(bvh, instances, m, rays, r, active, t_min, t_max, hits)
+                            : traverse<false, true, kMeshes>(bvh, instances, m, rays, r, active, t_min, t_max, hits);
+    return r.same_signs ? traverse<true, false, kMeshes>(bvh, instances, m, rays, r, active, t_min, t_max, hits)
+                        : traverse<false, false, kMeshes>(bvh, instances, m, rays, r, active, t_min, t_max, hits);
+}
+
 }  // namespace
 
 unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& instances,
@@ -416,12 +434,9 @@ unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& i
     active &= ~0u >> (32 - kPacketSize);
     if (bvh.nodes.empty() || active == 0) return 0;
     const PacketRays r(rays, active);
-    const TriangleMesh* m = meshes ? meshes->data() : nullptr;
-    if (r.common_origin)
-        return r.same_signs ? traverse<true, true>(bvh, instances, m, rays, r, active, t_min, t_max, hits)
-                            : traverse<false, true>(bvh, instances, m, rays, r, active, t_min, t_max, hits);
-    return r.same_signs ? traverse<true, false>(bvh, instances, m, rays, r, active, t_min, t_max, hits)
-                        : traverse<false, false>(bvh, instances, m, rays, r, active, t_min, t_max, hits);
+    if (bvh_detail::has_meshes(meshes))
+        return dispatch<true>(bvh, instances, meshes->data(), rays, r, active, t_min, t_max, hits);
+    return dispatch<false>(bvh, instances, nullptr, rays, r, active, t_min, t_max, hits);
 }
 
 #else

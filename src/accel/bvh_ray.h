@@ -4,6 +4,7 @@
 // instance test and the rule that picks the nearest hit exist once, here, inlined into both.
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include "accel/instance_geometry.h"
 #include "shapes/unit_shape_math.h"
@@ -21,6 +22,13 @@ inline float safe_reciprocal(float d) { return 1.0f / (std::fabs(d) > 1e-30f ? d
 // Forced inline: shared by two files, GCC would otherwise call these out of line from the
 // single-ray traversal (one call per instance test).
 #define WHITTED_BVH_INLINE [[gnu::always_inline]] inline
+// The same for a lambda (after its parameter list): a walk's leaf handler, which GCC would
+// otherwise call once per leaf.
+#define WHITTED_BVH_LAMBDA_INLINE __attribute__((always_inline))
+
+// Whether a query may meet mesh instances: only then do the walks test each instance's kind (a
+// mesh instance's index points into a non-empty `meshes`). Queries pick their walk once with it.
+inline bool has_meshes(const std::vector<TriangleMesh>* meshes) { return meshes != nullptr && !meshes->empty(); }
 
 // The object-space interval of instance `inst` along the world ray.
 WHITTED_BVH_INLINE shape_math::Span<float> intersect_instance(const Instance& inst, const Ray& ray) {

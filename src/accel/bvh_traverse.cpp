@@ -10,27 +10,47 @@
 
 namespace whitted {
 
-bool intersect_nearest(const Bvh& bvh, const std::vector<Instance>& instances, const Ray& ray, float t_min, float t_max,
-                       Hit& hit, const std::vector<TriangleMesh>* meshes) {
-    const Instance* inst = instances.data();
-    const TriangleMesh* mesh = meshes ? meshes->data() : nullptr;
+namespace {
+
+// kMeshes: the scene has mesh instances. Without them the leaves test unit shapes alone, with no
+// shape-kind branch and no triangle state (the query decides once which walk to take).
+template <bool kMeshes>
+bool nearest(const Bvh& bvh, const Instance* inst, const TriangleMesh* mesh, const Ray& ray, float t_min, float t_max,
+             Hit& hit) {
     bool found = false;
     float best = t_max;
     std::uint32_t best_index = 0;
     ShapePart best_part = kPartSide;
-    bvh_detail::TriangleState tri;
-    bvh_detail::walk_nearest(bvh, ray, t_min, best, [&](std::uint32_t first, std::uint32_t end) {
+    [[maybe_unused]] bvh_detail::TriangleState tri;
+    const auto leaf = [&](std::uint32_t first, std::uint32_t end) WHITTED_BVH_LAMBDA_INLINE {
         for (std::uint32_t i = first; i < end; ++i) {
-            if (inst[i].kind == ShapeKind::Mesh)
-                bvh_detail::offer_mesh_nearest(mesh[inst[i].mesh], inst[i], ray, i, t_min, t_max, best, best_index,
-                                               best_part, found, tri);
-            else
-                bvh_detail::offer_nearest(bvh_detail::intersect_instance(inst[i], ray), i, t_min, t_max, best,
-                                          best_index, best_part, found);
+            if constexpr (kMeshes) {
+                if (inst[i].kind == ShapeKind::Mesh) {
+                    bvh_detail::offer_mesh_nearest(mesh[inst[i].mesh], inst[i], ray, i, t_min, t_max, best,
+                                                   best_index, best_part, found, tri);
+                    continue;
+                }
+            }
+            bvh_detail::offer_nearest(bvh_detail::intersect_instance(inst[i], ray), i, t_min, t_max, best, best_index,
+                                      best_part, found);
         }
-    });
-    if (found) hit = bvh_detail::make_hit(inst, best, best_index, best_part, tri);
-    return found;
+    };
+    bvh_detail::walk_nearest(bvh, ray, t_min, best, leaf);
+    if (!found) return false;
+    if constexpr (kMeshes)
+        hit = bvh_detail::make_hit(inst, best, best_index, best_part, tri);
+    else
+        hit = Hit{best, best_index, best_part};
+    return true;
+}
+
+}  // namespace
+
+bool intersect_nearest(const Bvh& bvh, const std::vector<Instance>& instances, const Ray& ray, float t_min, float t_max,
+                       Hit& hit, const std::vector<TriangleMesh>* meshes) {
+    if (bvh_detail::has_meshes(meshes))
+        return nearest<true>(bvh, instances.data(), meshes->data(), ray, t_min, t_max, hit);
+    return nearest<false>(bvh, instances.data(), nullptr, ray, t_min, t_max, hit);
 }
 
 bool intersect_nearest_brute_force(const std::vector<Instance>& instances, const Ray& ray, float t_min, float t_max,

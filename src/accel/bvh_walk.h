@@ -22,6 +22,7 @@ WHITTED_BVH_INLINE void walk_nearest(const Bvh& bvh, const Ray& ray, float t_min
     };
     const BoxRay box_ray(ray);
     const BoxTester tester(box_ray);
+    const BoxLimit lo = box_limit(t_min);
     const Bvh4Node* nodes = bvh.nodes.data();
     StackEntry stack[kStackSize];
     int top = 0;
@@ -29,7 +30,7 @@ WHITTED_BVH_INLINE void walk_nearest(const Bvh& bvh, const Ray& ray, float t_min
     for (;;) {
         if (!Bvh4Node::is_leaf(ref)) {
             float tn[4];
-            int mask = tester.test(nodes[ref], t_min, best, tn);
+            int mask = tester.test(nodes[ref], lo, box_limit(best), tn);
             const Bvh4Node& n = nodes[ref];
             if (mask != 0) {
                 int i = lowest_bit(mask);
@@ -90,6 +91,7 @@ WHITTED_BVH_INLINE bool walk_any(const Bvh& bvh, const Ray& ray, float t_min, fl
     if (bvh.nodes.empty()) return true;
     const BoxRay box_ray(ray);
     const BoxTester tester(box_ray);
+    const BoxLimit lo = box_limit(t_min), hi = box_limit(t_max);
     const Bvh4Node* nodes = bvh.nodes.data();
     std::uint32_t stack[kStackSize];
     int top = 0;
@@ -98,7 +100,7 @@ WHITTED_BVH_INLINE bool walk_any(const Bvh& bvh, const Ray& ray, float t_min, fl
         if (!Bvh4Node::is_leaf(ref)) {
             float tn[4];
             const Bvh4Node& n = nodes[ref];
-            int mask = tester.test(n, t_min, t_max, tn);
+            int mask = tester.test(n, lo, hi, tn);
             if (mask != 0) {
                 if constexpr (kNearFirst) {
                     int i = lowest_bit(mask);
