@@ -12,24 +12,21 @@ namespace whitted {
 
 namespace {
 
-// kMeshes: the scene has mesh instances. Without them the leaves test unit shapes alone, with no
-// shape-kind branch and no triangle state (the query decides once which walk to take).
-template <bool kMeshes>
-bool nearest(const Bvh& bvh, const Instance* inst, const TriangleMesh* mesh, const Ray& ray, float t_min, float t_max,
-             Hit& hit) {
+// The walk of a scene with mesh instances: the leaves test each instance's kind (a scene without
+// them takes nearest_unit_shapes below; the query decides once which walk to take).
+bool nearest_with_meshes(const Bvh& bvh, const Instance* inst, const TriangleMesh* mesh, const Ray& ray, float t_min,
+                         float t_max, Hit& hit) {
     bool found = false;
     float best = t_max;
     std::uint32_t best_index = 0;
     ShapePart best_part = kPartSide;
-    [[maybe_unused]] bvh_detail::TriangleState tri;
+    bvh_detail::TriangleState tri;
     const auto leaf = [&](std::uint32_t first, std::uint32_t end) WHITTED_BVH_LAMBDA_INLINE {
         for (std::uint32_t i = first; i < end; ++i) {
-            if constexpr (kMeshes) {
-                if (inst[i].kind == ShapeKind::Mesh) {
-                    bvh_detail::offer_mesh_nearest(mesh[inst[i].mesh], inst[i], ray, i, t_min, t_max, best,
-                                                   best_index, best_part, found, tri);
-                    continue;
-                }
+            if (inst[i].kind == ShapeKind::Mesh) {
+                bvh_detail::offer_mesh_nearest(mesh[inst[i].mesh], inst[i], ray, i, t_min, t_max, best, best_index,
+                                               best_part, found, tri);
+                continue;
             }
             bvh_detail::offer_nearest(bvh_detail::intersect_instance(inst[i], ray), i, t_min, t_max, best, best_index,
                                       best_part, found);
@@ -37,11 +34,89 @@ bool nearest(const Bvh& bvh, const Instance* inst, const TriangleMesh* mesh, con
     };
     bvh_detail::walk_nearest(bvh, ray, t_min, best, leaf);
     if (!found) return false;
-    if constexpr (kMeshes)
-        hit = bvh_detail::make_hit(inst, best, best_index, best_part, tri);
-    else
-        hit = Hit{best, best_index, best_part};
+    hit = bvh_detail::make_hit(inst, best, best_index, best_part, tri);
     return true;
+}
+
+// The walk of a scene of unit shapes alone, written out by hand as before the mesh-capable walk
+// (78d87e6) rather than through walk_nearest: the same order, pruning and tie rule (so the same
+// hits), but GCC keeps the box test's per-ray row offsets in registers here and not in the
+// template (about 100 M instructions of the one-sample 1080p render, bench/RESULTS.md).
+bool nearest_unit_shapes(const Bvh& bvh, const Instance* inst, const Ray& ray, float t_min, float t_max, Hit& hit) {
+    using bvh_detail::lowest_bit;
+    struct StackEntry {
+        std::uint32_t ref;
+        float t;  // entry distance of its box, to skip it once a nearer hit is known
+    };
+    if (bvh.nodes.empty()) return false;
+    const bvh_detail::BoxRay box_ray(ray);
+    const bvh_detail::BoxTester tester(box_ray);
+    const Bvh4Node* nodes = bvh.nodes.data();
+    bool found = false;
+    float best = t_max;
+    std::uint32_t best_index = 0;
+    ShapePart best_part = kPartSide;
+
+    StackEntry stack[bvh_detail::kStackSize];
+    int top = 0;
+    std::uint32_t ref = 0;  // the root (an inner node)
+    for (;;) {
+        if (!Bvh4Node::is_leaf(ref)) {
+            float tn[4];
+            int mask = tester.test(nodes[ref], bvh_detail::box_limit(t_min), bvh_detail::box_limit(best), tn);
+            const Bvh4Node& n = nodes[ref];
+            if (mask != 0) {
+                int i = lowest_bit(mask);
+                mask &= mask - 1;
+                if (mask == 0) {  // one child: go straight on
+                    ref = n.child[i];
+                    continue;
+                }
+                const int j = lowest_bit(mask);
+                mask &= mask - 1;
+                if (mask == 0) {  // two: the common case, no sorting loop
+                    const bool swap = tn[j] < tn[i];
+                    const int near = swap ? j : i, far = swap ? i : j;
+                    stack[top++] = {n.child[far], tn[far]};
+                    ref = n.child[near];
+                    continue;
+                }
+                mask |= 1 << j;
+                // Several: push all but the nearest, farthest first (insertion by distance).
+                StackEntry hits[4];
+                int count = 0;
+                hits[count++] = {n.child[i], tn[i]};
+                do {
+                    i = lowest_bit(mask);
+                    mask &= mask - 1;
+                    StackEntry e{n.child[i], tn[i]};
+                    int k = count++;
+                    while (k > 0 && hits[k - 1].t < e.t) { hits[k] = hits[k - 1]; --k; }
+                    hits[k] = e;
+                } while (mask != 0);
+                for (int k = 0; k < count - 1; ++k) stack[top++] = hits[k];
+                ref = hits[count - 1].ref;
+                continue;
+            }
+        } else {
+            const std::uint32_t first = Bvh4Node::leaf_first(ref), end = first + Bvh4Node::leaf_count(ref);
+            for (std::uint32_t i = first; i < end; ++i)
+                bvh_detail::offer_nearest(bvh_detail::intersect_instance(inst[i], ray), i, t_min, t_max, best,
+                                          best_index, best_part, found);
+        }
+        // Pop, skipping boxes that a nearer hit found meanwhile has made irrelevant.
+        for (;;) {
+            if (top == 0) {
+                if (found) hit = Hit{best, best_index, best_part};
+                return found;
+            }
+            const StackEntry& e = stack[--top];
+            if (e.t <= best) {
+                ref = e.ref;
+                break;
+            }
+        }
+    }
 }
 
 }  // namespace
@@ -49,8 +124,8 @@ bool nearest(const Bvh& bvh, const Instance* inst, const TriangleMesh* mesh, con
 bool intersect_nearest(const Bvh& bvh, const std::vector<Instance>& instances, const Ray& ray, float t_min, float t_max,
                        Hit& hit, const std::vector<TriangleMesh>* meshes) {
     if (bvh_detail::has_meshes(meshes))
-        return nearest<true>(bvh, instances.data(), meshes->data(), ray, t_min, t_max, hit);
-    return nearest<false>(bvh, instances.data(), nullptr, ray, t_min, t_max, hit);
+        return nearest_with_meshes(bvh, instances.data(), meshes->data(), ray, t_min, t_max, hit);
+    return nearest_unit_shapes(bvh, instances.data(), ray, t_min, t_max, hit);
 }
 
 bool intersect_nearest_brute_force(const std::vector<Instance>& instances, const Ray& ray, float t_min, float t_max,

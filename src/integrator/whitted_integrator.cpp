@@ -52,11 +52,10 @@ bool WhittedIntegrator::query_from_light(const Light& light, const LightSample& 
 }
 
 // The light's sample for a point shaded at `depth`: its centre, or with an extent (§9.1) the point
-// of it this sample draws.
-LightSample WhittedIntegrator::light_sample(std::size_t li, const glm::vec3& point, int depth,
-                                            const SampleContext& ctx) const {
-    const Light& light = scene_.flat.lights[li];
-    if (!has_extent(light) || ctx.sampler.centred()) return sample_light(light, point);
+// of it this sample draws. `centred`: the sampler's, asked once per shading rather than per light.
+LightSample WhittedIntegrator::light_sample(const Light& light, std::size_t li, const glm::vec3& point, int depth,
+                                            bool centred, const SampleContext& ctx) const {
+    if (centred || !has_extent(light)) return sample_light(light, point);
     return sample_light(light, point, ctx.get2d(dimension::light(depth, std::uint32_t(li))));
 }
 
@@ -175,15 +174,23 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
     const FlatScene& flat = scene_.flat;
     const Surface& s = p.s;
     const Material& m = *s.material;
-    const glm::vec3 dir = p.dir, to_eye = -dir, n = p.n, above = p.above, below = p.below;
+    // References, not copies: the vectors live in `p` across the calls below either way (no
+    // vector register survives a call), so copying them only adds stores.
+    const glm::vec3 &dir = p.dir, &n = p.n, &above = p.above, &below = p.below;
+    const glm::vec3 to_eye = -dir;
     const bool outside = p.outside;
 
     glm::vec3 color = m.emit + s.ambient * flat.ambient_intensity;
     rec.base(m.emit, s.ambient * flat.ambient_intensity);
 
-    for (std::size_t li = 0; li < flat.lights.size(); ++li) {
-        const Light& light = flat.lights[li];
-        const LightSample ls = light_sample(li, s.point, depth, ctx);
+    // Read once: as far as GCC knows, the calls in the loop could change them.
+    const Light* const lights = flat.lights.data();
+    const std::size_t light_count = flat.lights.size();
+    const bool centred = ctx.sampler.centred();
+    const std::size_t packet_lights = shadows ? std::min(light_count, kPacketLights) : 0;  // known for lights below
+    for (std::size_t li = 0; li < light_count; ++li) {
+        const Light& light = lights[li];
+        const LightSample ls = light_sample(light, li, s.point, depth, centred, ctx);
         if (!faces_light(p, ls)) {
             if constexpr (Recorder::kRecords) rec.light(LightTerm{li, ls, false, 0.0f, glm::vec3(0.0f), {}, {}});
             continue;
@@ -193,7 +200,7 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
         // Camera-ray hits ask from the light first (so that a packet's shadow rays can share an
         // origin, and one by one they get the same answer); deeper hits, whose shadow rays are
         // not traced in packets, go straight to the query from the point, faster for single rays.
-        const ShadowQuery known = shadows && li < kPacketLights ? shadows->query[li][lane] : ShadowQuery::Unknown;
+        const ShadowQuery known = li < packet_lights ? shadows->query[li][lane] : ShadowQuery::Unknown;
         const glm::vec3 shadow = known == ShadowQuery::Lit                  ? glm::vec3(1.0f)
                                  : known == ShadowQuery::Blocked            ? glm::vec3(0.0f)
                                  : known == ShadowQuery::Glass || depth > 0 ? through_glass(ls, above)

@@ -55,7 +55,8 @@ private:
     static bool query_from_light(const Light& light, const LightSample& ls, const glm::vec3& start);
     // (light_sample, through_glass and secondary_direction are inline: called per light and
     // per bounce, they are a test and a call in the common case.)
-    inline LightSample light_sample(std::size_t li, const glm::vec3& point, int depth, const SampleContext& ctx) const;
+    inline LightSample light_sample(const Light& light, std::size_t li, const glm::vec3& point, int depth,
+                                    bool centred, const SampleContext& ctx) const;
     template <class Recorder>
     glm::vec3 shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight, const SampleContext& ctx,
                        RayCounts& counts, const PacketShadows* shadows, int lane, Recorder& rec) const;
