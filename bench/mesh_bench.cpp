@@ -1,6 +1,7 @@
 // Triangle meshes, whitted against Embree 3 on the same triangles and the same rays (issue 16).
 // One engine and one scene per process, so that each process's peak memory is its own:
 //   mesh_bench --engine whitted|embree --scene big|instances --threads 1|2 [--passes 4]
+//   mesh_bench --engine both --scene big|instances [--passes ROUNDS]   (ratios, interleaved: run_both)
 // Scenes (generated here, deterministic):
 //   big:       one displaced UV sphere of 1,000,000 triangles (shared vertices), camera at 4 radii.
 //   instances: a 10,000-triangle displaced sphere instanced 10,000 times (100 × 100 grid, random
@@ -21,6 +22,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <random>
@@ -287,6 +289,132 @@ Result run_embree(Setup& s, const std::vector<Ray>& rays, int threads) {
     return res;
 }
 
+
+// --engine both: the two engines in one process, on the same rays (the shadow rays start at
+// whitted's hits for both), timed alternately pass by pass: on a shared machine whose speed drifts
+// from second to second, the per-pass ratio is far steadier than two processes' rates. Prints the
+// median and range of the per-pass ratios whitted / Embree (rays per CPU-second); memory and build
+// figures come from the one-engine runs.
+void run_both(Setup& s, const std::vector<Ray>& rays, int rounds) {
+    RTCDevice device = rtcNewDevice(std::getenv("EMBREE_CONFIG") ? std::getenv("EMBREE_CONFIG") : "threads=1");
+    RTCScene mesh_scene = rtcNewScene(device);
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                          3 * sizeof(float), s.mesh.positions.size()));
+    std::memcpy(v, s.mesh.positions.data(), s.mesh.positions.size() * 3 * sizeof(float));
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                               3 * sizeof(unsigned), s.mesh.triangles.size()));
+    std::memcpy(idx, s.mesh.triangles.data(), s.mesh.triangles.size() * 3 * sizeof(unsigned));
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(mesh_scene, g);
+    rtcReleaseGeometry(g);
+    rtcCommitScene(mesh_scene);
+    RTCScene top = mesh_scene;
+    if (s.placements.size() > 1) {
+        top = rtcNewScene(device);
+        for (const glm::mat4& m : s.placements) {
+            RTCGeometry inst = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+            rtcSetGeometryInstancedScene(inst, mesh_scene);
+            rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &m[0][0]);
+            rtcCommitGeometry(inst);
+            rtcAttachGeometry(top, inst);
+            rtcReleaseGeometry(inst);
+        }
+        rtcCommitScene(top);
+    }
+    FlatScene flat;
+    flat.materials.push_back(Material{});
+    flat.meshes.push_back(std::move(s.mesh));
+    for (const glm::mat4& m : s.placements) {
+        Instance inst = make_instance(m, ShapeKind::Mesh, 0);
+        inst.mesh = 0;
+        flat.instances.push_back(inst);
+    }
+    const Scene scene = accelerate(std::move(flat), 1);
+
+    std::vector<Hit> hits(rays.size());
+    std::vector<char> found(rays.size());
+    for (std::size_t i = 0; i < rays.size(); ++i) found[i] = scene.intersect(rays[i], hits[i]);
+    std::vector<ShadowRay> shadow;
+    for (std::size_t i = 0; i < rays.size(); ++i)
+        if (found[i]) {
+            const glm::vec3 p = rays[i].at(hits[i].t) - 1e-3f * rays[i].direction;
+            shadow.push_back({Ray{p, s.light - p}, 1.0f});
+        }
+    std::vector<char> blocked(shadow.size());
+    std::size_t sink = 0;  // results used, so that no pass is optimised away
+    auto cpu_time = [](auto&& body) {
+        const double c0 = thread_cpu_seconds();
+        body();
+        return thread_cpu_seconds() - c0;
+    };
+    auto whitted_primary = [&] {
+        for (std::size_t i = 0; i < rays.size(); ++i) sink += scene.intersect(rays[i], hits[i]);
+    };
+    auto embree_primary = [&] {
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        for (const Ray& ray : rays) {
+            RTCRayHit rh{};
+            rh.ray.org_x = ray.origin.x, rh.ray.org_y = ray.origin.y, rh.ray.org_z = ray.origin.z;
+            rh.ray.dir_x = ray.direction.x, rh.ray.dir_y = ray.direction.y, rh.ray.dir_z = ray.direction.z;
+            rh.ray.tnear = 0.0f;
+            rh.ray.tfar = INFINITY;
+            rh.ray.mask = ~0u;
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+            rtcIntersect1(top, &ctx, &rh);
+            sink += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+        }
+    };
+    auto whitted_shadow = [&] {
+        for (std::size_t i = 0; i < shadow.size(); ++i) blocked[i] = scene.occluded(shadow[i].ray, shadow[i].t_max);
+    };
+    auto embree_shadow = [&] {
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        for (std::size_t i = 0; i < shadow.size(); ++i) {
+            RTCRay r{};
+            r.org_x = shadow[i].ray.origin.x, r.org_y = shadow[i].ray.origin.y, r.org_z = shadow[i].ray.origin.z;
+            r.dir_x = shadow[i].ray.direction.x, r.dir_y = shadow[i].ray.direction.y, r.dir_z = shadow[i].ray.direction.z;
+            r.tnear = 0.0f;
+            r.tfar = shadow[i].t_max;
+            r.mask = ~0u;
+            rtcOccluded1(top, &ctx, &r);
+            sink += r.tfar < 0.0f;
+        }
+    };
+    whitted_primary(), embree_primary(), whitted_shadow(), embree_shadow();  // warm the caches
+    std::vector<double> primary, shadow_ratio, w_primary, w_shadow;
+    for (int k = 0; k < rounds; ++k) {
+        // Alternate which engine goes first, so that neither always follows the other's cache state.
+        const bool whitted_first = k % 2 == 0;
+        double wp, ep, ws, es;
+        if (whitted_first) wp = cpu_time(whitted_primary), ep = cpu_time(embree_primary);
+        else ep = cpu_time(embree_primary), wp = cpu_time(whitted_primary);
+        if (whitted_first) ws = cpu_time(whitted_shadow), es = cpu_time(embree_shadow);
+        else es = cpu_time(embree_shadow), ws = cpu_time(whitted_shadow);
+        primary.push_back(ep / wp);
+        shadow_ratio.push_back(es / ws);
+        w_primary.push_back(double(rays.size()) / wp / 1e6);
+        w_shadow.push_back(double(shadow.size()) / ws / 1e6);
+    }
+    auto median = [](std::vector<double> x) {
+        std::sort(x.begin(), x.end());
+        return x.size() % 2 ? x[x.size() / 2] : 0.5 * (x[x.size() / 2 - 1] + x[x.size() / 2]);
+    };
+    auto lo = [](const std::vector<double>& x) { return *std::min_element(x.begin(), x.end()); };
+    auto hi = [](const std::vector<double>& x) { return *std::max_element(x.begin(), x.end()); };
+    std::printf("both    %-9s threads 1, %d rounds: whitted / Embree, rays per CPU-s, median [range] | primary %.3f "
+                "[%.3f-%.3f] (whitted %.2f M/s) | shadow %.3f [%.3f-%.3f] (whitted %.2f M/s) | %zu\n",
+                s.placements.size() > 1 ? "instances" : "big", rounds, median(primary), lo(primary), hi(primary),
+                median(w_primary), median(shadow_ratio), lo(shadow_ratio), hi(shadow_ratio), median(w_shadow),
+                sink % 2);
+    if (top != mesh_scene) rtcReleaseScene(top);
+    rtcReleaseScene(mesh_scene);
+    rtcReleaseDevice(device);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -299,13 +427,17 @@ int main(int argc, char** argv) {
         else if (k == "--threads") threads = std::stoi(v);
         else if (k == "--passes") passes_option = std::max(1, std::stoi(v));
         else {
-            std::fprintf(stderr, "usage: mesh_bench --engine whitted|embree --scene big|instances --threads N [--passes P]\n");
+            std::fprintf(stderr, "usage: mesh_bench --engine whitted|embree|both --scene big|instances --threads N [--passes P]\n");
             return 2;
         }
     }
     Setup s = make_setup(scene);
     const std::size_t triangles = s.mesh.triangles.size();
     const std::vector<Ray> rays = camera_rays(s);
+    if (engine == "both") {
+        run_both(s, rays, passes_option);
+        return 0;
+    }
     const Result r = engine == "embree" ? run_embree(s, rays, threads) : run_whitted(s, rays, threads);
     std::printf("%-7s %-9s threads %d: %zu triangles x %zu instances | build %.3f s | structure %.1f MB "
                 "(%.1f B/triangle) | RSS +%.1f MB, peak +%.1f MB | primary %.2f Mrays/s, %.2f per CPU-s (hit %.3f) | "

@@ -1,5 +1,6 @@
 #include "mesh/mesh_bvh.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "accel/bvh.h"
@@ -31,6 +32,33 @@ Bounds padded_triangle_bounds(const TriangleMesh& mesh, std::uint32_t t) {
     return b.padded(1e-6f);
 }
 
+// Copies every leaf's triangles into blocks of four (triangle_block.h), in the order of the
+// triangles (so a ray walking neighbouring leaves reads neighbouring blocks), and points the
+// leaves at their first block: a leaf's count stays its number of triangles.
+void make_blocks(TriangleMesh& mesh) {
+    std::vector<std::uint32_t*> leaves;
+    for (Bvh4Node& n : mesh.bvh.nodes)
+        for (std::uint32_t& ref : n.child)
+            if (Bvh4Node::is_leaf(ref)) leaves.push_back(&ref);
+    std::sort(leaves.begin(), leaves.end(), [](const std::uint32_t* a, const std::uint32_t* b) {
+        return Bvh4Node::leaf_first(*a) < Bvh4Node::leaf_first(*b);
+    });
+    std::size_t count = 0;
+    for (const std::uint32_t* ref : leaves) count += (Bvh4Node::leaf_count(*ref) + 3) / 4;
+    mesh.blocks.assign(count, TriangleBlock{});
+    mesh.block_first_triangle.assign(count, 0);
+    std::uint32_t block = 0;
+    for (std::uint32_t* ref : leaves) {
+        const std::uint32_t first = Bvh4Node::leaf_first(*ref), n = Bvh4Node::leaf_count(*ref);
+        *ref = Bvh4Node::kLeafBit | (block << 4) | (n - 1);
+        for (std::uint32_t k = 0; k < n; k += 4, ++block) {
+            fill_triangle_block(mesh.blocks[block], mesh.positions.data(), mesh.triangles.data(), first + k,
+                                std::min<std::uint32_t>(n - k, 4));
+            mesh.block_first_triangle[block] = first + k;
+        }
+    }
+}
+
 }  // namespace
 
 void build_mesh_bvh(TriangleMesh& mesh, int threads) {
@@ -41,6 +69,7 @@ void build_mesh_bvh(TriangleMesh& mesh, int threads) {
     permute(mesh.triangles, order);
     permute(mesh.normal_indices, order);
     permute(mesh.uv_indices, order);
+    make_blocks(mesh);
     mesh.bvh.nodes.shrink_to_fit();  // the build reserves for the worst case; a mesh lives long
     mesh.box = mesh.bvh.box;
 }
@@ -48,21 +77,21 @@ void build_mesh_bvh(TriangleMesh& mesh, int threads) {
 bool mesh_intersect_nearest(const TriangleMesh& mesh, const Ray& ray, float t_min, float t_max, MeshHit& hit) {
     const WatertightRay wr(ray);
     const WatertightRay4 wr4(wr);
-    const TriangleIndices* tris = mesh.triangles.data();
-    const glm::vec3* p = mesh.positions.data();
+    const TriangleBlock* blocks = mesh.blocks.data();
     float best = t_max;
     float limit = t_max;  // up to `best` inclusive once found, for the tie rule: an equal t from a lower index wins
     bool found = false;
     bvh_detail::walk_nearest(mesh.bvh, ray, t_min, best, [&](std::uint32_t first, std::uint32_t end) {
-        for (std::uint32_t g = first; g < end; g += 4) {
+        // `first` is the leaf's first block, end − first its number of triangles.
+        for (std::uint32_t b = first, left = end - first; left > 0; ++b, left -= left < 4 ? left : 4) {
             Triangle4Hits h;
-            int mask = intersect_triangles4(wr4, p, tris, g, end - g < 4 ? end - g : 4, t_min, limit, h);
+            int mask = intersect_triangles4(wr4, blocks[b], left < 4 ? left : 4, t_min, limit, h);
             // In index order, as one triangle at a time: a hit must still beat the limit its
-            // predecessors in the group have lowered.
+            // predecessors in the block have lowered.
             for (; mask != 0; mask &= mask - 1) {
                 const int j = __builtin_ctz(unsigned(mask));
-                const std::uint32_t i = g + std::uint32_t(j);
                 if (!(h.t[j] < limit)) continue;
+                const std::uint32_t i = mesh.block_first_triangle[b] + std::uint32_t(j);
                 if (!found || h.t[j] < best || i < hit.triangle) {
                     best = h.t[j];
                     limit = std::nextafter(best, t_max);

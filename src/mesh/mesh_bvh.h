@@ -35,14 +35,14 @@ template <class Visit>
 bool mesh_for_each_crossing(const TriangleMesh& mesh, const Ray& ray, float t_min, float t_max, Visit&& visit) {
     const WatertightRay wr(ray);
     const WatertightRay4 wr4(wr);
-    const TriangleIndices* tris = mesh.triangles.data();
-    const glm::vec3* p = mesh.positions.data();
+    const TriangleBlock* blocks = mesh.blocks.data();
     return bvh_detail::walk_any<true>(mesh.bvh, ray, t_min, t_max, [&](std::uint32_t first, std::uint32_t end) {
-        for (std::uint32_t g = first; g < end; g += 4) {  // four at a time, each group's hits in index order
+        // `first` is the leaf's first block, end − first its number of triangles.
+        for (std::uint32_t b = first, left = end - first; left > 0; ++b, left -= left < 4 ? left : 4) {
             Triangle4Hits h;
-            int mask = intersect_triangles4(wr4, p, tris, g, end - g < 4 ? end - g : 4, t_min, t_max, h);
+            int mask = intersect_triangles4(wr4, blocks[b], left < 4 ? left : 4, t_min, t_max, h);
             for (; mask != 0; mask &= mask - 1)
-                if (!visit(g + std::uint32_t(__builtin_ctz(unsigned(mask))))) return false;
+                if (!visit(mesh.block_first_triangle[b] + std::uint32_t(__builtin_ctz(unsigned(mask))))) return false;
         }
         return true;
     });

@@ -11,7 +11,8 @@ static std::size_t bytes_of(const std::vector<V>& v) {
 
 std::size_t TriangleMesh::memory_bytes() const {
     return bytes_of(positions) + bytes_of(triangles) + bytes_of(normals) + bytes_of(normal_indices) + bytes_of(uvs) +
-           bytes_of(uv_indices) + bytes_of(bvh.nodes) + sizeof(*this);
+           bytes_of(uv_indices) + bytes_of(bvh.nodes) + bytes_of(blocks) +
+           bytes_of(block_first_triangle) + sizeof(*this);
 }
 
 glm::vec3 triangle_geometric_normal(const TriangleMesh& mesh, std::uint32_t t) {

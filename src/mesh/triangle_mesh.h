@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "accel/bvh_node.h"
+#include "mesh/triangle_block.h"
 
 namespace whitted {
 
@@ -27,7 +28,11 @@ struct TriangleMesh {
     std::vector<TriangleIndices> normal_indices;
     std::vector<glm::vec2> uvs;
     std::vector<TriangleIndices> uv_indices;
-    Bvh bvh;       // over `triangles`, whose order it set (build_mesh_bvh)
+    Bvh bvh;       // over `triangles`, whose order it set (build_mesh_bvh); its leaves index `blocks`
+    // The leaves' triangles four to a block, in leaf order, and each block's first triangle (the
+    // others follow it in `triangles`).
+    std::vector<TriangleBlock> blocks;
+    std::vector<std::uint32_t> block_first_triangle;
     Bounds box;    // of all positions used by triangles
     std::string path;  // the file it came from, for messages
 

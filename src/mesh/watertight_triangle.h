@@ -23,6 +23,7 @@ struct WatertightRay {
     float sx, sy, sz;
     float ox, oy, oz;
 
+    WatertightRay() = default;
     explicit WatertightRay(const Ray& r) {
         const glm::vec3 a = glm::abs(r.direction);
         kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);

@@ -5,11 +5,13 @@
 // the same double-precision redo of an edge function that comes out zero), so each lane's answer
 // is the scalar test's bit for bit and a mesh stays watertight (tests/mesh/watertight_triangle4_test.cpp
 // checks it on random rays and on rays through vertices and edges). The leaves of a mesh's BVH
-// hold up to eight triangles, tested four at a time. (Built with FMA contraction — e.g. -march with
+// hold up to eight triangles, tested four at a time from blocks of copied corners
+// (triangle_block.h). (Built with FMA contraction — e.g. -march with
 // FMA and GCC's default -ffp-contract=fast — the scalar test could fuse products this one does not;
 // the test above would say so.)
 #include <cstdint>
 
+#include "mesh/triangle_block.h"
 #include "mesh/triangle_mesh.h"
 #include "mesh/watertight_triangle.h"
 
@@ -19,6 +21,17 @@
 #endif
 
 namespace whitted {
+
+// Copies triangles tris[first], …, tris[first + count − 1] (1 ≤ count ≤ 4) into a block; lanes
+// past `count` repeat the last triangle.
+inline void fill_triangle_block(TriangleBlock& b, const glm::vec3* p, const TriangleIndices* tris, std::uint32_t first,
+                                std::uint32_t count) {
+    for (std::uint32_t j = 0; j < 4; ++j) {
+        const TriangleIndices& c = tris[first + (j < count ? j : count - 1)];
+        for (int corner = 0; corner < 3; ++corner)
+            for (int axis = 0; axis < 3; ++axis) b.p[corner][axis][j] = p[c[corner]][axis];
+    }
+}
 
 // Lane j's t and barycentrics (weights of the second and third corners), where its bit is set.
 struct Triangle4Hits {
@@ -30,9 +43,11 @@ struct Triangle4Hits {
 #ifdef WHITTED_TRIANGLE4_SSE
 
 // The per-ray part of WatertightRay, broadcast to four lanes.
+// Default-constructed empty, for a walk that sets it up only once a leaf is reached.
 struct WatertightRay4 {
-    const WatertightRay& r;
+    WatertightRay r;
     __m128 sx, sy, sz, ox, oy, oz;
+    WatertightRay4() = default;
     explicit WatertightRay4(const WatertightRay& ray)
         : r(ray),
           sx(_mm_set1_ps(ray.sx)),
@@ -43,24 +58,13 @@ struct WatertightRay4 {
           oz(_mm_set1_ps(ray.oz)) {}
 };
 
-// Triangles tris[first], …, tris[first + count − 1] (1 ≤ count ≤ 4) against the ray, t in
-// (t_min, t_max): bit j of the result says triangle first + j is hit, at out.t[j], out.u[j], out.v[j].
-[[gnu::always_inline]] inline int intersect_triangles4(const WatertightRay4& r4, const glm::vec3* p, const TriangleIndices* tris,
-                                std::uint32_t first, std::uint32_t count, float t_min, float t_max,
-                                Triangle4Hits& out) {
+// The first `count` triangles of block b (1 ≤ count ≤ 4) against the ray, t in (t_min, t_max):
+// bit j of the result says lane j is hit, at out.t[j], out.u[j], out.v[j].
+[[gnu::always_inline]] inline int intersect_triangles4(const WatertightRay4& r4, const TriangleBlock& b,
+                                                       std::uint32_t count, float t_min, float t_max,
+                                                       Triangle4Hits& out) {
     const WatertightRay& r = r4.r;
-    // Corner pointers per lane; lanes past `count` repeat the last triangle and are masked off.
-    const float* q[3][4];
-    for (std::uint32_t j = 0; j < 4; ++j) {
-        const TriangleIndices& c = tris[first + (j < count ? j : count - 1)];
-        q[0][j] = &p[c[0]].x;
-        q[1][j] = &p[c[1]].x;
-        q[2][j] = &p[c[2]].x;
-    }
-    auto gather = [&q](int corner, int axis) {
-        const float* const* c = q[corner];
-        return _mm_setr_ps(c[0][axis], c[1][axis], c[2][axis], c[3][axis]);
-    };
+    auto gather = [&b](int corner, int axis) { return _mm_load_ps(b.p[corner][axis]); };
     const __m128 a_z = _mm_sub_ps(gather(0, r.kz), r4.oz);
     const __m128 b_z = _mm_sub_ps(gather(1, r.kz), r4.oz);
     const __m128 c_z = _mm_sub_ps(gather(2, r.kz), r4.oz);
@@ -113,18 +117,19 @@ struct WatertightRay4 {
 #else  // no SSE: the scalar test, one lane at a time
 
 struct WatertightRay4 {
-    const WatertightRay& r;
+    WatertightRay r;
+    WatertightRay4() = default;
     explicit WatertightRay4(const WatertightRay& ray) : r(ray) {}
 };
 
-[[gnu::always_inline]] inline int intersect_triangles4(const WatertightRay4& r4, const glm::vec3* p, const TriangleIndices* tris,
-                                std::uint32_t first, std::uint32_t count, float t_min, float t_max,
-                                Triangle4Hits& out) {
+[[gnu::always_inline]] inline int intersect_triangles4(const WatertightRay4& r4, const TriangleBlock& b,
+                                                       std::uint32_t count, float t_min, float t_max,
+                                                       Triangle4Hits& out) {
     int mask = 0;
     for (std::uint32_t j = 0; j < count; ++j) {
-        const TriangleIndices& c = tris[first + j];
+        auto corner = [&](int c) { return glm::vec3(b.p[c][0][j], b.p[c][1][j], b.p[c][2][j]); };
         TriangleHit h;
-        if (!intersect_triangle(r4.r, p[c[0]], p[c[1]], p[c[2]], t_min, t_max, h)) continue;
+        if (!intersect_triangle(r4.r, corner(0), corner(1), corner(2), t_min, t_max, h)) continue;
         out.t[j] = h.t, out.u[j] = h.u, out.v[j] = h.v;
         mask |= 1 << j;
     }

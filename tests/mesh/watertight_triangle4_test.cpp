@@ -27,8 +27,9 @@ void expect_lanes_match(const TriangleMesh& mesh, const Ray& ray, std::uint32_t 
     const WatertightRay wr(ray);
     const WatertightRay4 wr4(wr);
     Triangle4Hits h4;
-    const int mask = intersect_triangles4(wr4, mesh.positions.data(), mesh.triangles.data(), first, count, t_min,
-                                          t_max, h4);
+    TriangleBlock block;
+    fill_triangle_block(block, mesh.positions.data(), mesh.triangles.data(), first, count);
+    const int mask = intersect_triangles4(wr4, block, count, t_min, t_max, h4);
     EXPECT_EQ(mask >> count, 0) << what << " " << i << ": lanes past the group set";
     for (std::uint32_t j = 0; j < count; ++j) {
         const TriangleIndices& c = mesh.triangles[first + j];
