@@ -27,6 +27,9 @@ Bvh build_bvh(std::vector<Instance>& instances, int threads = 0, const std::vect
 // holds (leaves refer to slots). The BVH of instances and of a mesh's triangles are both this.
 Bvh build_bvh_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of, const BvhBuildCosts& costs,
                          int threads, std::vector<std::uint32_t>& order);
+// The same collapsed into 8-wide nodes (a mesh's BVH).
+Bvh8 build_bvh8_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of,
+                           const BvhBuildCosts& costs, int threads, std::vector<std::uint32_t>& order);
 
 struct Hit {
     float t;

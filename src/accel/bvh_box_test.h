@@ -41,6 +41,7 @@ using BoxLimit = __m128;
 inline BoxLimit box_limit(float t) { return _mm_set1_ps(t); }
 
 struct BoxTester {
+    using Limit = BoxLimit;
     __m128 o[3], inv[3];
     const BoxRay& r;
     explicit BoxTester(const BoxRay& ray) : r(ray) {
@@ -49,17 +50,27 @@ struct BoxTester {
             inv[a] = _mm_set1_ps(ray.inv[a]);
         }
     }
-    int test(const Bvh4Node& n, BoxLimit t_min, BoxLimit t_max, float t_near[4]) const {
-        const __m128 nx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.near_row[0]]), o[0]), inv[0]);
-        const __m128 ny = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.near_row[1]]), o[1]), inv[1]);
-        const __m128 nz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.near_row[2]]), o[2]), inv[2]);
-        const __m128 fx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.far_row[0]]), o[0]), inv[0]);
-        const __m128 fy = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.far_row[1]]), o[1]), inv[1]);
-        const __m128 fz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.box[r.far_row[2]]), o[2]), inv[2]);
+    Limit limit(float t) const { return box_limit(t); }
+    // Slots s0 … s0 + 3 of a node of any width.
+    template <int W>
+    int test_slots(const float (&box)[6][W], int s0, BoxLimit t_min, BoxLimit t_max, float* t_near) const {
+        const __m128 nx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(&box[r.near_row[0]][s0]), o[0]), inv[0]);
+        const __m128 ny = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(&box[r.near_row[1]][s0]), o[1]), inv[1]);
+        const __m128 nz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(&box[r.near_row[2]][s0]), o[2]), inv[2]);
+        const __m128 fx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(&box[r.far_row[0]][s0]), o[0]), inv[0]);
+        const __m128 fy = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(&box[r.far_row[1]][s0]), o[1]), inv[1]);
+        const __m128 fz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(&box[r.far_row[2]][s0]), o[2]), inv[2]);
         const __m128 enter = _mm_max_ps(_mm_max_ps(nx, ny), _mm_max_ps(nz, t_min));
         const __m128 leave = _mm_min_ps(_mm_min_ps(fx, fy), _mm_min_ps(fz, t_max));
         _mm_storeu_ps(t_near, enter);
         return _mm_movemask_ps(_mm_cmple_ps(enter, leave));
+    }
+    int test(const Bvh4Node& n, BoxLimit t_min, BoxLimit t_max, float t_near[4]) const {
+        return test_slots(n.box, 0, t_min, t_max, t_near);
+    }
+    // An 8-wide node in two halves (where the CPU lacks AVX2: bvh_box_test_avx2.h).
+    int test(const Bvh8Node& n, BoxLimit t_min, BoxLimit t_max, float t_near[8]) const {
+        return test_slots(n.box, 0, t_min, t_max, t_near) | test_slots(n.box, 4, t_min, t_max, t_near + 4) << 4;
     }
 };
 #else
@@ -67,11 +78,14 @@ using BoxLimit = float;
 inline BoxLimit box_limit(float t) { return t; }
 
 struct BoxTester {
+    using Limit = BoxLimit;
     const BoxRay& r;
     explicit BoxTester(const BoxRay& ray) : r(ray) {}
-    int test(const Bvh4Node& n, BoxLimit t_min, BoxLimit t_max, float t_near[4]) const {
+    Limit limit(float t) const { return t; }
+    template <int W>
+    int test(const BvhNode<W>& n, BoxLimit t_min, BoxLimit t_max, float t_near[W]) const {
         int mask = 0;
-        for (int s = 0; s < 4; ++s) {
+        for (int s = 0; s < W; ++s) {
             float enter = t_min, leave = t_max;
             for (int a = 0; a < 3; ++a) {
                 enter = std::max((n.box[r.near_row[a]][s] - r.o[a]) * r.inv[a], enter);

@@ -268,13 +268,15 @@ std::vector<BinNode> build_binary(std::vector<PrimRef>& refs, int threads, const
     return nodes;
 }
 
-// Depth-first collapse of the binary subtree at `root` into 4-wide nodes; returns the index of
+// Depth-first collapse of the binary subtree at `root` into W-wide nodes; returns the index of
 // the wide node made for it.
-std::uint32_t collapse(const std::vector<BinNode>& bin, std::uint32_t root, std::vector<Bvh4Node>& out) {
-    // Open the largest-area inner node of the set until there are four (or only leaves).
-    std::uint32_t set[4] = {root};
+template <class Node>
+std::uint32_t collapse(const std::vector<BinNode>& bin, std::uint32_t root, std::vector<Node>& out) {
+    constexpr int W = Node::kWidth;
+    // Open the largest-area inner node of the set until there are W (or only leaves).
+    std::uint32_t set[W] = {root};
     int size = 1;
-    while (size < 4) {
+    while (size < W) {
         int pick = -1;
         float pick_area = -1.0f;
         for (int i = 0; i < size; ++i) {
@@ -289,8 +291,8 @@ std::uint32_t collapse(const std::vector<BinNode>& bin, std::uint32_t root, std:
     const std::uint32_t index = static_cast<std::uint32_t>(out.size());
     out.emplace_back();
     {
-        Bvh4Node& node = out[index];
-        for (int s = 0; s < 4; ++s) {
+        Node& node = out[index];
+        for (int s = 0; s < W; ++s) {
             for (int a = 0; a < 3; ++a) {
                 node.box[a][s] = std::numeric_limits<float>::infinity();
                 node.box[3 + a][s] = -std::numeric_limits<float>::infinity();
@@ -303,11 +305,11 @@ std::uint32_t collapse(const std::vector<BinNode>& bin, std::uint32_t root, std:
         const BinNode& c = bin[set[s]];
         std::uint32_t ref;
         if (c.count > 0) {
-            ref = Bvh4Node::kLeafBit | (c.first << 4) | (c.count - 1);
+            ref = Node::kLeafBit | (c.first << 4) | (c.count - 1);
         } else {
             ref = collapse(bin, set[s], out);  // may reallocate `out`: index again below
         }
-        Bvh4Node& node = out[index];
+        Node& node = out[index];
         for (int a = 0; a < 3; ++a) {
             node.box[a][s] = c.box.lo[a];
             node.box[3 + a][s] = c.box.hi[a];
@@ -317,12 +319,11 @@ std::uint32_t collapse(const std::vector<BinNode>& bin, std::uint32_t root, std:
     return index;
 }
 
-}  // namespace
-
-Bvh build_bvh_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of, const BvhBuildCosts& costs,
-                         int threads_asked, std::vector<std::uint32_t>& order) {
+template <class Node>
+BasicBvh<Node> build_wide_bvh(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of,
+                              const BvhBuildCosts& costs, int threads_asked, std::vector<std::uint32_t>& order) {
     const int threads = build_threads(threads_asked);
-    Bvh bvh;
+    BasicBvh<Node> bvh;
     order.clear();
     if (n == 0) return bvh;
     if (n >= Bvh4Node::kMaxInstances) throw std::length_error("too many primitives for the BVH");
@@ -341,11 +342,23 @@ Bvh build_bvh_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t
     for (std::uint32_t i = 0; i < n; ++i) order[i] = refs[i].index();
     std::vector<PrimRef>().swap(refs);  // lower the peak: the refs are done with
     bvh.box = bin[0].box;
-    // The binary tree has ~2n/L nodes for leaves of L; a wide node replaces three inner
-    // ones, so ~2n/(3L) wide nodes. Untouched reserved pages cost no memory.
-    bvh.nodes.reserve(bin.size() / 3 + 1);
+    // The binary tree has ~2n/L nodes for leaves of L; a W-wide node replaces W − 1 inner
+    // ones, so ~2n/((W − 1)L) wide nodes. Untouched reserved pages cost no memory.
+    bvh.nodes.reserve(bin.size() / (Node::kWidth - 1) + 1);
     collapse(bin, 0, bvh.nodes);
     return bvh;
+}
+
+}  // namespace
+
+Bvh build_bvh_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of, const BvhBuildCosts& costs,
+                         int threads, std::vector<std::uint32_t>& order) {
+    return build_wide_bvh<Bvh4Node>(n, box_of, costs, threads, order);
+}
+
+Bvh8 build_bvh8_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of,
+                           const BvhBuildCosts& costs, int threads, std::vector<std::uint32_t>& order) {
+    return build_wide_bvh<Bvh8Node>(n, box_of, costs, threads, order);
 }
 
 Bvh build_bvh(std::vector<Instance>& instances, int threads, const std::vector<TriangleMesh>* meshes,

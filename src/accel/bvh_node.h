@@ -8,13 +8,17 @@
 
 namespace whitted {
 
-// 128 bytes, two cache lines. box[row][slot]: rows lo.x, lo.y, lo.z, hi.x, hi.y, hi.z. An unused
-// slot has an empty box (lo = +inf, hi = -inf) that no ray enters.
-struct alignas(64) Bvh4Node {
-    float box[6][4];
+// A node of `W` children (4: 128 bytes, two cache lines; 8: 256 bytes). box[row][slot]: rows
+// lo.x, lo.y, lo.z, hi.x, hi.y, hi.z. An unused slot has an empty box (lo = +inf, hi = -inf) that
+// no ray enters. The top level is 4-wide (tested with SSE); a mesh's BVH is 8-wide, tested in one
+// AVX2 step where the CPU has it (mesh/mesh_walk8.h), as Embree's BVH8.
+template <int W>
+struct alignas(64) BvhNode {
+    static constexpr int kWidth = W;
+    float box[6][W];
     // Per slot: inner child = its node index; leaf = kLeafBit | first primitive << 4 | (count - 1).
-    std::uint32_t child[4];
-    std::uint32_t pad[4];
+    std::uint32_t child[W];
+    std::uint32_t pad[W];
 
     static constexpr std::uint32_t kLeafBit = 0x80000000u;
     static constexpr std::uint32_t kMaxLeafSize = 16;
@@ -23,13 +27,19 @@ struct alignas(64) Bvh4Node {
     static std::uint32_t leaf_first(std::uint32_t ref) { return (ref & ~kLeafBit) >> 4; }
     static std::uint32_t leaf_count(std::uint32_t ref) { return (ref & 15u) + 1; }
 };
+using Bvh4Node = BvhNode<4>;
+using Bvh8Node = BvhNode<8>;
 static_assert(sizeof(Bvh4Node) == 128);
+static_assert(sizeof(Bvh8Node) == 256);
 
-struct Bvh {
-    std::vector<Bvh4Node> nodes;  // nodes[0] is the root; empty for an empty scene
-    Bounds box;                   // of the whole scene
+template <class Node>
+struct BasicBvh {
+    std::vector<Node> nodes;  // nodes[0] is the root; empty for an empty scene
+    Bounds box;               // of the whole scene
     Bounds bounds() const { return box; }
 };
+using Bvh = BasicBvh<Bvh4Node>;   // the top level, over instances
+using Bvh8 = BasicBvh<Bvh8Node>;  // a mesh's, over its triangles
 
 // The costs the binned SAH build weighs: a traversal step against one primitive test, and the
 // most primitives a leaf may hold (<= Bvh4Node::kMaxLeafSize); `block` primitives are tested at

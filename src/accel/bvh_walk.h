@@ -1,7 +1,7 @@
 #pragma once
-// The single-ray walks through a 4-wide BVH, whatever its leaves hold: the top level's instances
-// (bvh_traverse.cpp, bvh_any_hit.h) and a mesh's triangles (mesh/mesh_bvh.h). Templates on the
-// leaf handler, so it is inlined into the loop.
+// The single-ray walks through a wide BVH, whatever its leaves hold: the top level's instances
+// (4-wide; bvh_traverse.cpp, bvh_any_hit.h) and a mesh's triangles (8-wide; mesh/mesh_bvh.h).
+// Templates on the node, the box tester and the leaf handler, so all are inlined into the loop.
 #include <cstdint>
 
 #include "accel/bvh_box_test.h"
@@ -10,28 +10,33 @@
 
 namespace whitted::bvh_detail {
 
+// The stack a walk of W-wide nodes needs: binary depth is at most 96 (kStackSize, bvh_ray.h) and
+// a wide level consumes at least one binary level and pushes at most W − 1 entries.
+constexpr int walk_stack_size(int W) { return (W - 1) * (kStackSize / 3); }
+
 // Nearest-hit walk: the hit children are visited nearest first with a small fixed stack, and
 // boxes entered beyond `best` are skipped. leaf(first, end) tests the leaf's primitives
 // [first, end) and may lower `best` (which starts at the query's t_max).
-template <class Leaf>
-WHITTED_BVH_INLINE void walk_nearest(const Bvh& bvh, const Ray& ray, float t_min, float& best, Leaf&& leaf) {
+// walk_nearest with the box tester given.
+template <class Tester, class Node, class Leaf>
+WHITTED_BVH_INLINE void walk_nearest_with(const Tester& tester, const BasicBvh<Node>& bvh, float t_min, float& best,
+                                          Leaf&& leaf) {
     if (bvh.nodes.empty()) return;
+    constexpr int W = Node::kWidth;
     struct StackEntry {
         std::uint32_t ref;
         float t;  // entry distance of its box, to skip it once a nearer hit is known
     };
-    const BoxRay box_ray(ray);
-    const BoxTester tester(box_ray);
-    const BoxLimit lo = box_limit(t_min);
-    const Bvh4Node* nodes = bvh.nodes.data();
-    StackEntry stack[kStackSize];
+    const typename Tester::Limit lo = tester.limit(t_min);
+    const Node* nodes = bvh.nodes.data();
+    StackEntry stack[walk_stack_size(W)];
     int top = 0;
     std::uint32_t ref = 0;  // the root (an inner node)
     for (;;) {
-        if (!Bvh4Node::is_leaf(ref)) {
-            float tn[4];
-            int mask = tester.test(nodes[ref], lo, box_limit(best), tn);
-            const Bvh4Node& n = nodes[ref];
+        if (!Node::is_leaf(ref)) {
+            float tn[W];
+            int mask = tester.test(nodes[ref], lo, tester.limit(best), tn);
+            const Node& n = nodes[ref];
             if (mask != 0) {
                 int i = lowest_bit(mask);
                 mask &= mask - 1;
@@ -50,7 +55,7 @@ WHITTED_BVH_INLINE void walk_nearest(const Bvh& bvh, const Ray& ray, float t_min
                 }
                 mask |= 1 << j;
                 // Several: push all but the nearest, farthest first (insertion by distance).
-                StackEntry hits[4];
+                StackEntry hits[W];
                 int count = 0;
                 hits[count++] = {n.child[i], tn[i]};
                 do {
@@ -66,8 +71,8 @@ WHITTED_BVH_INLINE void walk_nearest(const Bvh& bvh, const Ray& ray, float t_min
                 continue;
             }
         } else {
-            const std::uint32_t first = Bvh4Node::leaf_first(ref);
-            leaf(first, first + Bvh4Node::leaf_count(ref));
+            const std::uint32_t first = Node::leaf_first(ref);
+            leaf(first, first + Node::leaf_count(ref));
         }
         // Pop, skipping boxes that a nearer hit found meanwhile has made irrelevant.
         for (;;) {
@@ -81,25 +86,31 @@ WHITTED_BVH_INLINE void walk_nearest(const Bvh& bvh, const Ray& ray, float t_min
     }
 }
 
+template <class Node, class Leaf>
+WHITTED_BVH_INLINE void walk_nearest(const BasicBvh<Node>& bvh, const Ray& ray, float t_min, float& best, Leaf&& leaf) {
+    const BoxRay box_ray(ray);
+    walk_nearest_with(BoxTester(box_ray), bvh, t_min, best, leaf);
+}
+
 // Any-hit walk: every leaf whose box the ray enters within (t_min, t_max) is handed to
 // leaf(first, end), in no particular order, until it returns false. Returns false if stopped.
 // kNearFirst: of two or more children hit, the nearest box is entered first (a mesh's triangles:
 // a shadow ray from a surface meets the nearby surface it is blocked by sooner; the order of the
 // leaves is still unspecified).
-template <bool kNearFirst = false, class Leaf>
-WHITTED_BVH_INLINE bool walk_any(const Bvh& bvh, const Ray& ray, float t_min, float t_max, Leaf&& leaf) {
+template <bool kNearFirst, class Tester, class Node, class Leaf>
+WHITTED_BVH_INLINE bool walk_any_with(const Tester& tester, const BasicBvh<Node>& bvh, float t_min, float t_max,
+                                      Leaf&& leaf) {
     if (bvh.nodes.empty()) return true;
-    const BoxRay box_ray(ray);
-    const BoxTester tester(box_ray);
-    const BoxLimit lo = box_limit(t_min), hi = box_limit(t_max);
-    const Bvh4Node* nodes = bvh.nodes.data();
-    std::uint32_t stack[kStackSize];
+    constexpr int W = Node::kWidth;
+    const typename Tester::Limit lo = tester.limit(t_min), hi = tester.limit(t_max);
+    const Node* nodes = bvh.nodes.data();
+    std::uint32_t stack[walk_stack_size(W)];
     int top = 0;
     std::uint32_t ref = 0;
     for (;;) {
-        if (!Bvh4Node::is_leaf(ref)) {
-            float tn[4];
-            const Bvh4Node& n = nodes[ref];
+        if (!Node::is_leaf(ref)) {
+            float tn[W];
+            const Node& n = nodes[ref];
             int mask = tester.test(n, lo, hi, tn);
             if (mask != 0) {
                 if constexpr (kNearFirst) {
@@ -126,12 +137,18 @@ WHITTED_BVH_INLINE bool walk_any(const Bvh& bvh, const Ray& ray, float t_min, fl
                 continue;
             }
         } else {
-            const std::uint32_t first = Bvh4Node::leaf_first(ref);
-            if (!leaf(first, first + Bvh4Node::leaf_count(ref))) return false;
+            const std::uint32_t first = Node::leaf_first(ref);
+            if (!leaf(first, first + Node::leaf_count(ref))) return false;
         }
         if (top == 0) return true;
         ref = stack[--top];
     }
+}
+
+template <bool kNearFirst = false, class Node, class Leaf>
+WHITTED_BVH_INLINE bool walk_any(const BasicBvh<Node>& bvh, const Ray& ray, float t_min, float t_max, Leaf&& leaf) {
+    const BoxRay box_ray(ray);
+    return walk_any_with<kNearFirst>(BoxTester(box_ray), bvh, t_min, t_max, leaf);
 }
 
 }  // namespace whitted::bvh_detail

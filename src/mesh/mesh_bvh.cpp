@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "accel/bvh.h"
+#include "util/parallel_for.h"
 
 namespace whitted {
 namespace {
@@ -34,54 +35,63 @@ Bounds padded_triangle_bounds(const TriangleMesh& mesh, std::uint32_t t) {
 
 // Copies every leaf's triangles into blocks of four (triangle_block.h), in the order of the
 // triangles (so a ray walking neighbouring leaves reads neighbouring blocks), and points the
-// leaves at their first block: a leaf's count stays its number of triangles.
-void make_blocks(TriangleMesh& mesh) {
+// leaves at their first block: a leaf's count stays its number of triangles. The copying runs on
+// `threads` threads (each leaf's blocks are known before, so the result is the same).
+void make_blocks(TriangleMesh& mesh, int threads) {
     std::vector<std::uint32_t*> leaves;
-    for (Bvh4Node& n : mesh.bvh.nodes)
+    for (Bvh8Node& n : mesh.bvh.nodes)
         for (std::uint32_t& ref : n.child)
-            if (Bvh4Node::is_leaf(ref)) leaves.push_back(&ref);
+            if (Bvh8Node::is_leaf(ref)) leaves.push_back(&ref);
     std::sort(leaves.begin(), leaves.end(), [](const std::uint32_t* a, const std::uint32_t* b) {
-        return Bvh4Node::leaf_first(*a) < Bvh4Node::leaf_first(*b);
+        return Bvh8Node::leaf_first(*a) < Bvh8Node::leaf_first(*b);
     });
-    std::size_t count = 0;
-    for (const std::uint32_t* ref : leaves) count += (Bvh4Node::leaf_count(*ref) + 3) / 4;
-    mesh.blocks.assign(count, TriangleBlock{});
-    mesh.block_first_triangle.assign(count, 0);
-    std::uint32_t block = 0;
-    for (std::uint32_t* ref : leaves) {
-        const std::uint32_t first = Bvh4Node::leaf_first(*ref), n = Bvh4Node::leaf_count(*ref);
-        *ref = Bvh4Node::kLeafBit | (block << 4) | (n - 1);
-        for (std::uint32_t k = 0; k < n; k += 4, ++block) {
-            fill_triangle_block(mesh.blocks[block], mesh.positions.data(), mesh.triangles.data(), first + k,
-                                std::min<std::uint32_t>(n - k, 4));
-            mesh.block_first_triangle[block] = first + k;
+    std::vector<std::uint32_t> first_block(leaves.size() + 1, 0);
+    for (std::size_t l = 0; l < leaves.size(); ++l)
+        first_block[l + 1] = first_block[l] + (Bvh8Node::leaf_count(*leaves[l]) + 3) / 4;
+    mesh.blocks.resize(first_block.back());
+    mesh.block_first_triangle.resize(first_block.back());
+    constexpr std::size_t kChunk = 4096;  // leaves per work item
+    const std::size_t chunks = (leaves.size() + kChunk - 1) / kChunk;
+    parallel_for(chunks, worker_count(threads, chunks), [&](std::size_t c, int) {
+        for (std::size_t l = c * kChunk; l < std::min(leaves.size(), (c + 1) * kChunk); ++l) {
+            std::uint32_t& ref = *leaves[l];
+            const std::uint32_t first = Bvh8Node::leaf_first(ref), n = Bvh8Node::leaf_count(ref);
+            std::uint32_t block = first_block[l];
+            ref = Bvh8Node::kLeafBit | (block << 4) | (n - 1);
+            for (std::uint32_t k = 0; k < n; k += 4, ++block) {
+                fill_triangle_block(mesh.blocks[block], mesh.positions.data(), mesh.triangles.data(), first + k,
+                                    std::min<std::uint32_t>(n - k, 4));
+                mesh.block_first_triangle[block] = first + k;
+            }
         }
-    }
+    });
 }
 
 }  // namespace
 
 void build_mesh_bvh(TriangleMesh& mesh, int threads) {
     std::vector<std::uint32_t> order;
-    mesh.bvh = build_bvh_over_boxes(
+    mesh.bvh = build_bvh8_over_boxes(
         mesh.triangles.size(), [&](std::uint32_t t) { return padded_triangle_bounds(mesh, t); }, kTriangleCosts, threads,
         order);
     permute(mesh.triangles, order);
-    permute(mesh.normal_indices, order);
-    permute(mesh.uv_indices, order);
-    make_blocks(mesh);
+    make_blocks(mesh, threads);
     mesh.bvh.nodes.shrink_to_fit();  // the build reserves for the worst case; a mesh lives long
     mesh.box = mesh.bvh.box;
 }
 
-bool mesh_intersect_nearest(const TriangleMesh& mesh, const Ray& ray, float t_min, float t_max, MeshHit& hit) {
+namespace {
+
+template <class Tester>
+WHITTED_BVH_INLINE bool nearest_with(const TriangleMesh& mesh, const Ray& ray, float t_min, float t_max, MeshHit& hit) {
     const WatertightRay wr(ray);
     const WatertightRay4 wr4(wr);
     const TriangleBlock* blocks = mesh.blocks.data();
     float best = t_max;
     float limit = t_max;  // up to `best` inclusive once found, for the tie rule: an equal t from a lower index wins
     bool found = false;
-    bvh_detail::walk_nearest(mesh.bvh, ray, t_min, best, [&](std::uint32_t first, std::uint32_t end) {
+    const bvh_detail::BoxRay box_ray(ray);
+    bvh_detail::walk_nearest_with(Tester(box_ray), mesh.bvh, t_min, best, [&](std::uint32_t first, std::uint32_t end) {
         // `first` is the leaf's first block, end − first its number of triangles.
         for (std::uint32_t b = first, left = end - first; left > 0; ++b, left -= left < 4 ? left : 4) {
             Triangle4Hits h;
@@ -102,6 +112,27 @@ bool mesh_intersect_nearest(const TriangleMesh& mesh, const Ray& ray, float t_mi
         }
     });
     return found;
+}
+
+#ifdef WHITTED_BVH_AVX2
+[[gnu::target("avx2"), gnu::flatten]] bool nearest_avx2(const TriangleMesh& mesh, const Ray& ray, float t_min,
+                                                        float t_max, MeshHit& hit) {
+    return nearest_with<bvh_detail::BoxTesterAvx2>(mesh, ray, t_min, t_max, hit);
+}
+#endif
+
+}  // namespace
+
+bool set_mesh_walks_use_avx2(bool on) {
+    mesh_detail::use_avx2 = on && mesh_detail::cpu_allows_avx2();
+    return mesh_detail::use_avx2;
+}
+
+bool mesh_intersect_nearest(const TriangleMesh& mesh, const Ray& ray, float t_min, float t_max, MeshHit& hit) {
+#ifdef WHITTED_BVH_AVX2
+    if (mesh_detail::use_avx2) return nearest_avx2(mesh, ray, t_min, t_max, hit);
+#endif
+    return nearest_with<bvh_detail::BoxTester>(mesh, ray, t_min, t_max, hit);
 }
 
 bool mesh_intersect_nearest_brute_force(const TriangleMesh& mesh, const Ray& ray, float t_min, float t_max,

@@ -4,6 +4,7 @@
 // top level (accel/) reaches these through a mesh instance, with the ray in object space.
 #include <cstdint>
 
+#include "accel/bvh_box_test_avx2.h"
 #include "accel/bvh_walk.h"
 #include "mesh/triangle_mesh.h"
 #include "mesh/watertight_triangle.h"
@@ -11,9 +12,9 @@
 
 namespace whitted {
 
-// Builds mesh.bvh and reorders mesh.triangles (and their normal and uv corners) to its leaf
-// order; sets mesh.box. On `threads` threads (0 = all); the result is the same for any count.
-// Throws std::length_error beyond Bvh4Node::kMaxInstances triangles.
+// Builds mesh.bvh and reorders mesh.triangles to its leaf order (and copies them into
+// mesh.blocks); sets mesh.box. On `threads` threads (0 = all); the result is the same for any count.
+// Throws std::length_error beyond Bvh8Node::kMaxInstances triangles.
 void build_mesh_bvh(TriangleMesh& mesh, int threads = 0);
 
 struct MeshHit {
@@ -29,23 +30,67 @@ bool mesh_intersect_nearest(const TriangleMesh& mesh, const Ray& ray, float t_mi
 bool mesh_intersect_nearest_brute_force(const TriangleMesh& mesh, const Ray& ray, float t_min, float t_max,
                                         MeshHit& hit);
 
+// The walks test a node's eight boxes in one AVX2 step where the CPU has AVX2, else in two SSE
+// steps; the answers are the same. Tests turn AVX2 off to check that; returns whether it is on
+// (never where the CPU lacks it).
+bool set_mesh_walks_use_avx2(bool on);
+
+namespace mesh_detail {
+
+inline bool cpu_allows_avx2() {
+#ifdef WHITTED_BVH_AVX2
+    return bvh_detail::cpu_has_avx2();
+#else
+    return false;
+#endif
+}
+// Read once per mesh query (inline: no call for it).
+inline bool use_avx2 = cpu_allows_avx2();
+
+template <class Tester, class Visit>
+WHITTED_BVH_INLINE bool for_each_crossing_with(const TriangleMesh& mesh, const Ray& ray, float t_min, float t_max,
+                                               Visit& visit) {
+    // Set up at the first leaf: a shadow ray often crosses an instance's box without reaching one.
+    WatertightRay4 wr4;
+    bool ready = false;
+    const TriangleBlock* blocks = mesh.blocks.data();
+    const bvh_detail::BoxRay box_ray(ray);
+    return bvh_detail::walk_any_with<true>(
+        Tester(box_ray), mesh.bvh, t_min, t_max, [&](std::uint32_t first, std::uint32_t end) WHITTED_BVH_LAMBDA_INLINE {
+            if (!ready) {
+                wr4 = WatertightRay4(WatertightRay(ray));
+                ready = true;
+            }
+            // `first` is the leaf's first block, end − first its number of triangles.
+            for (std::uint32_t b = first, left = end - first; left > 0; ++b, left -= left < 4 ? left : 4) {
+                Triangle4Hits h;
+                int mask = intersect_triangles4(wr4, blocks[b], left < 4 ? left : 4, t_min, t_max, h);
+                for (; mask != 0; mask &= mask - 1)
+                    if (!visit(mesh.block_first_triangle[b] + std::uint32_t(__builtin_ctz(unsigned(mask)))))
+                        return false;
+            }
+            return true;
+        });
+}
+
+#ifdef WHITTED_BVH_AVX2
+template <class Visit>
+[[gnu::target("avx2"), gnu::flatten]] bool for_each_crossing_avx2(const TriangleMesh& mesh, const Ray& ray,
+                                                                  float t_min, float t_max, Visit& visit) {
+    return for_each_crossing_with<bvh_detail::BoxTesterAvx2>(mesh, ray, t_min, t_max, visit);
+}
+#endif
+
+}  // namespace mesh_detail
+
 // Calls visit(triangle) for every triangle the ray crosses with t in (t_min, t_max), in no
 // particular order, until it returns false; returns false if stopped.
 template <class Visit>
 bool mesh_for_each_crossing(const TriangleMesh& mesh, const Ray& ray, float t_min, float t_max, Visit&& visit) {
-    const WatertightRay wr(ray);
-    const WatertightRay4 wr4(wr);
-    const TriangleBlock* blocks = mesh.blocks.data();
-    return bvh_detail::walk_any<true>(mesh.bvh, ray, t_min, t_max, [&](std::uint32_t first, std::uint32_t end) {
-        // `first` is the leaf's first block, end − first its number of triangles.
-        for (std::uint32_t b = first, left = end - first; left > 0; ++b, left -= left < 4 ? left : 4) {
-            Triangle4Hits h;
-            int mask = intersect_triangles4(wr4, blocks[b], left < 4 ? left : 4, t_min, t_max, h);
-            for (; mask != 0; mask &= mask - 1)
-                if (!visit(mesh.block_first_triangle[b] + std::uint32_t(__builtin_ctz(unsigned(mask))))) return false;
-        }
-        return true;
-    });
+#ifdef WHITTED_BVH_AVX2
+    if (mesh_detail::use_avx2) return mesh_detail::for_each_crossing_avx2(mesh, ray, t_min, t_max, visit);
+#endif
+    return mesh_detail::for_each_crossing_with<bvh_detail::BoxTester>(mesh, ray, t_min, t_max, visit);
 }
 
 }  // namespace whitted

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <sstream>
+#include <unordered_map>
 
 #include <tiny_obj_loader.h>
 
@@ -106,6 +108,21 @@ std::string first_line(std::string s) {
 
 bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
+// A corner of the file: its v, vn and vt indices (kNoIndex for none).
+constexpr std::uint32_t kNoIndex = 0xffffffffu;
+struct CornerKey {
+    std::uint32_t v, n, t;
+    bool operator==(const CornerKey&) const = default;
+};
+struct CornerKeyHash {
+    std::size_t operator()(const CornerKey& k) const {
+        std::uint64_t h = k.v * 0x9E3779B97F4A7C15ull;
+        h ^= (h >> 29) + k.n * 0xBF58476D1CE4E5B9ull;
+        h ^= (h >> 31) + k.t * 0x94D049BB133111EBull;
+        return std::size_t(h ^ (h >> 32));
+    }
+};
+
 }  // namespace
 
 ObjReadResult read_obj_text(const std::string& text, const std::string& name, TriangleMesh& mesh) {
@@ -131,19 +148,35 @@ ObjReadResult read_obj_text(const std::string& text, const std::string& name, Tr
 
     mesh = TriangleMesh();
     mesh.path = name;
-    const std::size_t nv = attrib.vertices.size() / 3;
-    mesh.positions.resize(nv);
-    for (std::size_t i = 0; i < nv; ++i)
-        mesh.positions[i] = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]};
-    const std::size_t nn = attrib.normals.size() / 3;
-    mesh.normals.resize(nn);
-    for (std::size_t i = 0; i < nn; ++i)
-        mesh.normals[i] = {attrib.normals[3 * i], attrib.normals[3 * i + 1], attrib.normals[3 * i + 2]};
-    const std::size_t nt = attrib.texcoords.size() / 2;
-    mesh.uvs.resize(nt);
-    for (std::size_t i = 0; i < nt; ++i) mesh.uvs[i] = {attrib.texcoords[2 * i], attrib.texcoords[2 * i + 1]};
-
+    const std::size_t nv = attrib.vertices.size() / 3, nn = attrib.normals.size() / 3, nt = attrib.texcoords.size() / 2;
+    auto position = [&](int i) {
+        return glm::vec3(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]);
+    };
     const bool with_normals = nn > 0, with_uvs = nt > 0;
+    // One index per corner for position, normal and uv, as pbrt and Embree keep meshes: a vertex
+    // per distinct (v, vn, vt) of the file's corners (split where a seam gives one position two
+    // uvs), so a triangle costs one index triple, not three. A corner without a valid vn holds
+    // the normal (0, 0, 0), without a valid vt the uv (NaN, NaN): its triangle then takes its
+    // geometric normal, or uv (0, 0), as §9.3 says.
+    std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> vertex_of;
+    vertex_of.reserve(nv);
+    auto vertex = [&](const tinyobj::index_t& c) {
+        const bool has_n = with_normals && c.normal_index >= 0 && std::size_t(c.normal_index) < nn;
+        const bool has_t = with_uvs && c.texcoord_index >= 0 && std::size_t(c.texcoord_index) < nt;
+        const CornerKey key{std::uint32_t(c.vertex_index), has_n ? std::uint32_t(c.normal_index) : kNoIndex,
+                            has_t ? std::uint32_t(c.texcoord_index) : kNoIndex};
+        const auto [it, added] = vertex_of.try_emplace(key, std::uint32_t(mesh.positions.size()));
+        if (!added) return it->second;
+        mesh.positions.push_back(position(c.vertex_index));
+        if (with_normals)
+            mesh.normals.push_back(has_n ? glm::vec3(attrib.normals[3 * key.n], attrib.normals[3 * key.n + 1],
+                                                     attrib.normals[3 * key.n + 2])
+                                         : glm::vec3(0.0f));
+        if (with_uvs)
+            mesh.uvs.push_back(has_t ? glm::vec2(attrib.texcoords[2 * key.t], attrib.texcoords[2 * key.t + 1])
+                                     : glm::vec2(std::numeric_limits<float>::quiet_NaN()));
+        return it->second;
+    };
     for (const tinyobj::shape_t& shape : shapes) {
         const std::vector<tinyobj::index_t>& idx = shape.mesh.indices;
         std::size_t corner = 0;
@@ -154,24 +187,14 @@ ObjReadResult read_obj_text(const std::string& text, const std::string& name, Tr
             }
             const tinyobj::index_t* c = &idx[corner];
             corner += 3;
-            const TriangleIndices tri{std::uint32_t(c[0].vertex_index), std::uint32_t(c[1].vertex_index),
-                                      std::uint32_t(c[2].vertex_index)};
-            const glm::vec3 a = mesh.positions[tri[0]], b = mesh.positions[tri[1]], d = mesh.positions[tri[2]];
+            const glm::vec3 a = position(c[0].vertex_index), b = position(c[1].vertex_index),
+                            d = position(c[2].vertex_index);
             const glm::vec3 n = glm::cross(b - a, d - a);
             if (!finite(a) || !finite(b) || !finite(d) || !(glm::dot(n, n) > 0.0f)) {
                 ++result.degenerate;
                 continue;
             }
-            mesh.triangles.push_back(tri);
-            auto corners = [&](int tinyobj::index_t::*field, std::size_t count) {
-                TriangleIndices t{TriangleMesh::kNone, TriangleMesh::kNone, TriangleMesh::kNone};
-                if (c[0].*field >= 0 && c[1].*field >= 0 && c[2].*field >= 0 && std::size_t(c[0].*field) < count &&
-                    std::size_t(c[1].*field) < count && std::size_t(c[2].*field) < count)
-                    t = {std::uint32_t(c[0].*field), std::uint32_t(c[1].*field), std::uint32_t(c[2].*field)};
-                return t;
-            };
-            if (with_normals) mesh.normal_indices.push_back(corners(&tinyobj::index_t::normal_index, nn));
-            if (with_uvs) mesh.uv_indices.push_back(corners(&tinyobj::index_t::texcoord_index, nt));
+            mesh.triangles.push_back({vertex(c[0]), vertex(c[1]), vertex(c[2])});
         }
     }
     if (mesh.triangles.empty()) {
@@ -180,9 +203,10 @@ ObjReadResult read_obj_text(const std::string& text, const std::string& name, Tr
                                              : "the file holds no triangle (no 'f' face with three or more vertices)";
         return result;
     }
+    mesh.positions.shrink_to_fit();
     mesh.triangles.shrink_to_fit();
-    mesh.normal_indices.shrink_to_fit();
-    mesh.uv_indices.shrink_to_fit();
+    mesh.normals.shrink_to_fit();
+    mesh.uvs.shrink_to_fit();
     result.ok = true;
     return result;
 }

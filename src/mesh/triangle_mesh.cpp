@@ -10,9 +10,8 @@ static std::size_t bytes_of(const std::vector<V>& v) {
 }
 
 std::size_t TriangleMesh::memory_bytes() const {
-    return bytes_of(positions) + bytes_of(triangles) + bytes_of(normals) + bytes_of(normal_indices) + bytes_of(uvs) +
-           bytes_of(uv_indices) + bytes_of(bvh.nodes) + bytes_of(blocks) +
-           bytes_of(block_first_triangle) + sizeof(*this);
+    return bytes_of(positions) + bytes_of(triangles) + bytes_of(normals) + bytes_of(uvs) + bytes_of(bvh.nodes) +
+           bytes_of(blocks) + bytes_of(block_first_triangle) + sizeof(*this);
 }
 
 glm::vec3 triangle_geometric_normal(const TriangleMesh& mesh, std::uint32_t t) {
@@ -26,10 +25,12 @@ float triangle_area(const TriangleMesh& mesh, std::uint32_t t) {
 }
 
 glm::vec3 mesh_shading_normal(const TriangleMesh& mesh, std::uint32_t t, float u, float v) {
-    if (!mesh.normal_indices.empty()) {
-        const TriangleIndices& c = mesh.normal_indices[t];
-        if (c[0] != TriangleMesh::kNone) {
-            const glm::vec3 n = (1.0f - u - v) * mesh.normals[c[0]] + u * mesh.normals[c[1]] + v * mesh.normals[c[2]];
+    if (!mesh.normals.empty()) {
+        const TriangleIndices& c = mesh.triangles[t];
+        const glm::vec3 &n0 = mesh.normals[c[0]], &n1 = mesh.normals[c[1]], &n2 = mesh.normals[c[2]];
+        const glm::vec3 zero(0.0f);
+        if (n0 != zero && n1 != zero && n2 != zero) {  // every corner has the file's normal
+            const glm::vec3 n = (1.0f - u - v) * n0 + u * n1 + v * n2;
             const float len = glm::length(n);
             if (len > 0.0f && std::isfinite(len)) return n / len;
         }
@@ -38,10 +39,11 @@ glm::vec3 mesh_shading_normal(const TriangleMesh& mesh, std::uint32_t t, float u
 }
 
 glm::vec2 mesh_uv(const TriangleMesh& mesh, std::uint32_t t, float u, float v) {
-    if (mesh.uv_indices.empty()) return glm::vec2(0.0f);
-    const TriangleIndices& c = mesh.uv_indices[t];
-    if (c[0] == TriangleMesh::kNone) return glm::vec2(0.0f);
-    const glm::vec2 st = (1.0f - u - v) * mesh.uvs[c[0]] + u * mesh.uvs[c[1]] + v * mesh.uvs[c[2]];
+    if (mesh.uvs.empty()) return glm::vec2(0.0f);
+    const TriangleIndices& c = mesh.triangles[t];
+    const glm::vec2 &a = mesh.uvs[c[0]], &b = mesh.uvs[c[1]], &d = mesh.uvs[c[2]];
+    if (std::isnan(a.x) || std::isnan(b.x) || std::isnan(d.x)) return glm::vec2(0.0f);  // a corner without vt
+    const glm::vec2 st = (1.0f - u - v) * a + u * b + v * d;
     return {st.x, 1.0f - st.y};
 }
 

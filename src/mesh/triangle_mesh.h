@@ -18,17 +18,16 @@ namespace whitted {
 using TriangleIndices = std::array<std::uint32_t, 3>;
 
 struct TriangleMesh {
-    static constexpr std::uint32_t kNone = 0xffffffffu;  // a corner without a normal or uv
-
+    // One index per corner for all of a vertex's attributes (the OBJ reader makes a vertex per
+    // distinct v/vt/vn of the file's corners, as pbrt and Embree keep meshes).
     std::vector<glm::vec3> positions;
     std::vector<TriangleIndices> triangles;  // into positions, counter-clockwise seen from outside
-    // Per triangle, into normals / uvs; empty when the file gives none. A triangle whose corners
-    // lack them has kNone there (then its geometric normal, or uv (0, 0)).
+    // Per vertex, as positions; empty when the file gives none. A vertex whose corner had no normal
+    // holds (0, 0, 0) (its triangles take their geometric normal), one without vt (NaN, NaN) (its
+    // triangles take uv (0, 0)).
     std::vector<glm::vec3> normals;
-    std::vector<TriangleIndices> normal_indices;
     std::vector<glm::vec2> uvs;
-    std::vector<TriangleIndices> uv_indices;
-    Bvh bvh;       // over `triangles`, whose order it set (build_mesh_bvh); its leaves index `blocks`
+    Bvh8 bvh;      // over `triangles`, whose order it set (build_mesh_bvh); its leaves index `blocks`
     // The leaves' triangles four to a block, in leaf order, and each block's first triangle (the
     // others follow it in `triangles`).
     std::vector<TriangleBlock> blocks;

@@ -18,7 +18,6 @@ inline TriangleMesh uv_sphere(int rings, int segments, float radius = 0.5f) {
     TriangleMesh m = uv_sphere_mesh(rings, segments, [radius](const glm::vec3&) { return radius; });
     m.normals.reserve(m.positions.size());
     for (const glm::vec3& p : m.positions) m.normals.push_back(glm::normalize(p));
-    m.normal_indices = m.triangles;
     return m;
 }
 

@@ -1,5 +1,5 @@
 // Reading OBJ files (scene-format.md §9.3): polygons triangulated, normals and texture coordinates
-// kept per corner, degenerate triangles skipped, and every error with the OBJ line it is on.
+// kept per corner (a vertex per distinct v/vt/vn), degenerate triangles skipped, and every error with the OBJ line it is on.
 #include <gtest/gtest.h>
 
 #include "mesh/obj_reader.h"
@@ -23,20 +23,24 @@ TEST(ObjReader, TriangulatesPolygonsAndKeepsCornerAttributes) {
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.degenerate, 0u);
     ASSERT_EQ(m.triangles.size(), 3u);  // the quad in two, the triangle
-    EXPECT_EQ(m.positions.size(), 5u);
-    ASSERT_EQ(m.normal_indices.size(), 3u);
-    ASSERT_EQ(m.uv_indices.size(), 3u);
-    // The quad's triangles use its four corners with their uvs; the last triangle has no uv.
-    EXPECT_EQ(m.triangles[2], (TriangleIndices{0, 1, 4}));
-    EXPECT_EQ(m.normal_indices[2], (TriangleIndices{1, 1, 1}));
-    EXPECT_EQ(m.uv_indices[2][0], TriangleMesh::kNone);
-    EXPECT_EQ(m.normal_indices[0], (TriangleIndices{0, 0, 0}));
+    // A vertex per distinct v/vt/vn corner: the quad's four, and the triangle's three (v 1 and
+    // v 2 come again with another normal and no uv).
+    ASSERT_EQ(m.positions.size(), 7u);
+    ASSERT_EQ(m.normals.size(), 7u);
+    ASSERT_EQ(m.uvs.size(), 7u);
+    // The last triangle is the file's v 1, 2, 5, all with vn 2 and no vt.
+    const glm::vec3 want[3] = {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(m.positions[m.triangles[2][k]], want[k]) << k;
+        EXPECT_EQ(m.normals[m.triangles[2][k]], glm::vec3(0, 1, 0)) << k;
+    }
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(m.normals[m.triangles[0][k]], glm::vec3(0, 0, 1)) << k;
     // uv at the quad's third corner (v 3, vt 1 1) is (1, 0) in the format's orientation (v down),
     // in whichever of the quad's triangles holds it, at whichever corner.
     bool found = false;
     for (std::uint32_t t = 0; t < 2; ++t)
         for (int k = 0; k < 3; ++k)
-            if (m.triangles[t][k] == 2) {
+            if (m.positions[m.triangles[t][k]] == glm::vec3(1, 1, 0)) {
                 const glm::vec2 uv = mesh_uv(m, t, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f);
                 EXPECT_FLOAT_EQ(uv.x, 1.0f);
                 EXPECT_FLOAT_EQ(uv.y, 0.0f);
