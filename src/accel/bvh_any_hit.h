@@ -51,6 +51,17 @@ bool walk_crossings(const Bvh& bvh, const Instance* inst, const std::vector<Tria
     });
 }
 
+#ifdef WHITTED_BVH_AVX2
+// The walk of a scene with meshes compiled for AVX2 (the same operations, VEX-encoded, and the
+// mesh walks' 8-wide box test inlined: mesh/mesh_bvh.h), where the CPU has it.
+template <class Visit>
+[[gnu::target("avx2"), gnu::flatten]] bool walk_crossings_avx2(const Bvh& bvh, const Instance* inst,
+                                                               const std::vector<TriangleMesh>* meshes, const Ray& ray,
+                                                               float t_min, float t_max, Visit& visit) {
+    return walk_crossings<true>(bvh, inst, meshes, ray, t_min, t_max, visit);
+}
+#endif
+
 }  // namespace bvh_detail
 
 // Calls visit(instance index, crossings) for every instance whose surface the ray crosses within
@@ -60,8 +71,13 @@ bool walk_crossings(const Bvh& bvh, const Instance* inst, const std::vector<Tria
 template <class Visit>
 bool for_each_crossing(const Bvh& bvh, const std::vector<Instance>& instances, const std::vector<TriangleMesh>* meshes,
                        const Ray& ray, float t_min, float t_max, Visit&& visit) {
-    if (bvh_detail::has_meshes(meshes))
+    if (bvh_detail::has_meshes(meshes)) {
+#ifdef WHITTED_BVH_AVX2
+        if (mesh_detail::use_avx2)
+            return bvh_detail::walk_crossings_avx2(bvh, instances.data(), meshes, ray, t_min, t_max, visit);
+#endif
         return bvh_detail::walk_crossings<true>(bvh, instances.data(), meshes, ray, t_min, t_max, visit);
+    }
     return bvh_detail::walk_crossings<false>(bvh, instances.data(), meshes, ray, t_min, t_max, visit);
 }
 
