@@ -175,7 +175,8 @@ Result run_whitted(Setup& s, const std::vector<Ray>& rays, int threads) {
     res.rss_delta_mb = rss_mb() - rss0;
     res.peak_delta_mb = peak_rss_mb() - peak0;
     res.structure_mb = double(scene.flat.meshes[0].memory_bytes() + scene.flat.instances.capacity() * sizeof(Instance) +
-                              scene.bvh.nodes.capacity() * sizeof(Bvh4Node)) / 1e6;
+                              scene.bvh.nodes.capacity() * sizeof(Bvh4Node) +
+                              scene.bvh.wide.nodes.capacity() * sizeof(Bvh8Node)) / 1e6;
     std::vector<Hit> hits(rays.size());
     std::vector<char> found(rays.size());
     const Timing tp = run_parallel(rays.size(), threads, passes_option, [&](std::size_t b, std::size_t e) {

@@ -34,33 +34,65 @@ WHITTED_BVH_INLINE bool visit_instance(const Instance& inst, std::uint32_t i, co
     return visit_unit_instance(inst, i, ray, t_min, t_max, visit);
 }
 
-// for_each_crossing's walk; kMeshes: the scene has mesh instances (else no instance's kind is
-// tested against Mesh).
-template <bool kMeshes, class Visit>
-bool walk_crossings(const Bvh& bvh, const Instance* inst, const std::vector<TriangleMesh>* meshes, const Ray& ray,
-                    float t_min, float t_max, Visit& visit) {
-    return walk_any(bvh, ray, t_min, t_max, [&](std::uint32_t first, std::uint32_t end) WHITTED_BVH_LAMBDA_INLINE {
-        for (std::uint32_t i = first; i < end; ++i) {
-            if constexpr (kMeshes) {
-                if (!visit_instance(inst[i], i, meshes, ray, t_min, t_max, visit)) return false;
-            } else {
-                if (!visit_unit_instance(inst[i], i, ray, t_min, t_max, visit)) return false;
-            }
-        }
-        return true;
-    });
+// for_each_crossing's walk over `tree` (4- or 8-wide) with box tester Tester; kMeshes: the scene
+// has mesh instances (else no instance's kind is tested against Mesh).
+template <bool kMeshes, class Tester, class Node, class Visit>
+WHITTED_BVH_INLINE bool walk_crossings_on(const BasicBvh<Node>& tree, const Instance* inst,
+                                          const std::vector<TriangleMesh>* meshes, const Ray& ray, float t_min,
+                                          float t_max, Visit& visit) {
+    const BoxRay box_ray(ray);
+    return walk_any_with<false>(Tester(box_ray), tree, t_min, t_max,
+                                [&](std::uint32_t first, std::uint32_t end) WHITTED_BVH_LAMBDA_INLINE {
+                                    for (std::uint32_t i = first; i < end; ++i) {
+                                        if constexpr (kMeshes) {
+                                            if (!visit_instance(inst[i], i, meshes, ray, t_min, t_max, visit))
+                                                return false;
+                                        } else {
+                                            if (!visit_unit_instance(inst[i], i, ray, t_min, t_max, visit))
+                                                return false;
+                                        }
+                                    }
+                                    return true;
+                                });
+}
+
+// A scene of unit shapes: the 4-wide tree.
+template <class Visit>
+bool walk_unit_crossings(const Bvh& bvh, const Instance* inst, const Ray& ray, float t_min, float t_max,
+                         Visit& visit) {
+    return walk_crossings_on<false, BoxTester>(static_cast<const BasicBvh<Bvh4Node>&>(bvh), inst, nullptr, ray, t_min,
+                                               t_max, visit);
+}
+
+template <class Tester, class Node, class Visit>
+bool walk_mesh_crossings(const BasicBvh<Node>& tree, const Instance* inst, const std::vector<TriangleMesh>* meshes,
+                         const Ray& ray, float t_min, float t_max, Visit& visit) {
+    return walk_crossings_on<true, Tester>(tree, inst, meshes, ray, t_min, t_max, visit);
 }
 
 #ifdef WHITTED_BVH_AVX2
-// The walk of a scene with meshes compiled for AVX2 (the same operations, VEX-encoded, and the
-// mesh walks' 8-wide box test inlined: mesh/mesh_bvh.h), where the CPU has it.
+// A scene with meshes on a CPU with AVX2: the 8-wide tree in AVX2 steps, the meshes' walks inlined.
 template <class Visit>
-[[gnu::target("avx2"), gnu::flatten]] bool walk_crossings_avx2(const Bvh& bvh, const Instance* inst,
-                                                               const std::vector<TriangleMesh>* meshes, const Ray& ray,
-                                                               float t_min, float t_max, Visit& visit) {
-    return walk_crossings<true>(bvh, inst, meshes, ray, t_min, t_max, visit);
+[[gnu::target("avx2"), gnu::flatten]] bool walk_mesh_crossings_avx2(const Bvh8& tree, const Instance* inst,
+                                                                    const std::vector<TriangleMesh>* meshes,
+                                                                    const Ray& ray, float t_min, float t_max,
+                                                                    Visit& visit) {
+    return walk_crossings_on<true, BoxTesterAvx2>(tree, inst, meshes, ray, t_min, t_max, visit);
 }
 #endif
+
+// A scene with meshes: its 8-wide tree (the 4-wide one for a tree built without it).
+template <class Visit>
+bool walk_crossings_with_meshes(const Bvh& bvh, const Instance* inst, const std::vector<TriangleMesh>* meshes,
+                                const Ray& ray, float t_min, float t_max, Visit& visit) {
+    if (bvh.wide.nodes.empty())
+        return walk_mesh_crossings<BoxTester>(static_cast<const BasicBvh<Bvh4Node>&>(bvh), inst, meshes, ray, t_min,
+                                              t_max, visit);
+#ifdef WHITTED_BVH_AVX2
+    if (mesh_detail::use_avx2) return walk_mesh_crossings_avx2(bvh.wide, inst, meshes, ray, t_min, t_max, visit);
+#endif
+    return walk_mesh_crossings<BoxTester>(bvh.wide, inst, meshes, ray, t_min, t_max, visit);
+}
 
 }  // namespace bvh_detail
 
@@ -71,14 +103,9 @@ template <class Visit>
 template <class Visit>
 bool for_each_crossing(const Bvh& bvh, const std::vector<Instance>& instances, const std::vector<TriangleMesh>* meshes,
                        const Ray& ray, float t_min, float t_max, Visit&& visit) {
-    if (bvh_detail::has_meshes(meshes)) {
-#ifdef WHITTED_BVH_AVX2
-        if (mesh_detail::use_avx2)
-            return bvh_detail::walk_crossings_avx2(bvh, instances.data(), meshes, ray, t_min, t_max, visit);
-#endif
-        return bvh_detail::walk_crossings<true>(bvh, instances.data(), meshes, ray, t_min, t_max, visit);
-    }
-    return bvh_detail::walk_crossings<false>(bvh, instances.data(), meshes, ray, t_min, t_max, visit);
+    if (bvh_detail::has_meshes(meshes))
+        return bvh_detail::walk_crossings_with_meshes(bvh, instances.data(), meshes, ray, t_min, t_max, visit);
+    return bvh_detail::walk_unit_crossings(bvh, instances.data(), ray, t_min, t_max, visit);
 }
 
 template <class Visit>

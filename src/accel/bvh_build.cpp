@@ -268,25 +268,57 @@ std::vector<BinNode> build_binary(std::vector<PrimRef>& refs, int threads, const
     return nodes;
 }
 
+// The binary leaves under every node of the tree (children come after their parent in `bin`).
+std::vector<std::uint32_t> leaves_under(const std::vector<BinNode>& bin) {
+    std::vector<std::uint32_t> n(bin.size(), 1);
+    for (std::size_t i = bin.size(); i-- > 0;)
+        if (bin[i].count == 0) n[i] = n[bin[i].first] + n[bin[i].second];
+    return n;
+}
+
 // Depth-first collapse of the binary subtree at `root` into W-wide nodes; returns the index of
-// the wide node made for it.
+// the wide node made for it. `leaves`: leaves_under(bin), for the 8-wide fill rule below (empty
+// for 4-wide nodes).
 template <class Node>
-std::uint32_t collapse(const std::vector<BinNode>& bin, std::uint32_t root, std::vector<Node>& out) {
+std::uint32_t collapse(const std::vector<BinNode>& bin, std::uint32_t root, std::vector<Node>& out,
+                       const std::vector<std::uint32_t>& leaves) {
     constexpr int W = Node::kWidth;
-    // Open the largest-area inner node of the set until there are W (or only leaves).
     std::uint32_t set[W] = {root};
     int size = 1;
-    while (size < W) {
+    auto open = [&](int i) {
+        const BinNode& c = bin[set[i]];
+        set[i] = c.first;
+        set[size++] = c.second;
+    };
+    // The largest-area member that is an inner node and passes `ok`, or -1.
+    auto largest = [&](auto ok) {
         int pick = -1;
         float pick_area = -1.0f;
         for (int i = 0; i < size; ++i) {
             const BinNode& c = bin[set[i]];
-            if (c.count == 0 && c.box.surface_area() > pick_area) { pick = i; pick_area = c.box.surface_area(); }
+            if (c.count == 0 && ok(set[i]) && c.box.surface_area() > pick_area) { pick = i; pick_area = c.box.surface_area(); }
         }
-        if (pick < 0) break;
-        const BinNode& c = bin[set[pick]];
-        set[pick] = c.first;
-        set[size++] = c.second;
+        return pick;
+    };
+    if (W > 4 && leaves[root] <= std::uint32_t(W * W)) {
+        // Near the bottom of an 8-wide tree, opening by area alone leaves most nodes of the last
+        // level half empty (a subtree of 32 leaves becomes 8 nodes of 4; for 10,000 instances,
+        // 4,681 nodes where 1,500 would do). Open the members of more than W leaves (so each
+        // child fills a node of its own), then absorb whole the small ones that still fit.
+        for (int pick; size < W && (pick = largest([&](std::uint32_t b) { return leaves[b] > std::uint32_t(W); })) >= 0;)
+            open(pick);
+        for (;;) {
+            int pick = -1;
+            for (int i = 0; i < size; ++i)
+                if (bin[set[i]].count == 0 && leaves[set[i]] - 1 <= std::uint32_t(W - size) &&
+                    (pick < 0 || leaves[set[i]] < leaves[set[pick]]))
+                    pick = i;
+            if (pick < 0) break;
+            open(pick);
+        }
+    } else {
+        // Open the largest-area inner node of the set until there are W (or only leaves).
+        for (int pick; size < W && (pick = largest([](std::uint32_t) { return true; })) >= 0;) open(pick);
     }
     const std::uint32_t index = static_cast<std::uint32_t>(out.size());
     out.emplace_back();
@@ -307,7 +339,7 @@ std::uint32_t collapse(const std::vector<BinNode>& bin, std::uint32_t root, std:
         if (c.count > 0) {
             ref = Node::kLeafBit | (c.first << 4) | (c.count - 1);
         } else {
-            ref = collapse(bin, set[s], out);  // may reallocate `out`: index again below
+            ref = collapse(bin, set[s], out, leaves);  // may reallocate `out`: index again below
         }
         Node& node = out[index];
         for (int a = 0; a < 3; ++a) {
@@ -345,7 +377,7 @@ BasicBvh<Node> build_wide_bvh(std::size_t n, const std::function<Bounds(std::uin
     // The binary tree has ~2n/L nodes for leaves of L; a W-wide node replaces W − 1 inner
     // ones, so ~2n/((W − 1)L) wide nodes. Untouched reserved pages cost no memory.
     bvh.nodes.reserve(bin.size() / (Node::kWidth - 1) + 1);
-    collapse(bin, 0, bvh.nodes);
+    collapse(bin, 0, bvh.nodes, Node::kWidth > 4 ? leaves_under(bin) : std::vector<std::uint32_t>());
     return bvh;
 }
 
@@ -353,7 +385,9 @@ BasicBvh<Node> build_wide_bvh(std::size_t n, const std::function<Bounds(std::uin
 
 Bvh build_bvh_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of, const BvhBuildCosts& costs,
                          int threads, std::vector<std::uint32_t>& order) {
-    return build_wide_bvh<Bvh4Node>(n, box_of, costs, threads, order);
+    Bvh bvh;
+    static_cast<BasicBvh<Bvh4Node>&>(bvh) = build_wide_bvh<Bvh4Node>(n, box_of, costs, threads, order);
+    return bvh;
 }
 
 Bvh8 build_bvh8_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of,
@@ -365,9 +399,16 @@ Bvh build_bvh(std::vector<Instance>& instances, int threads, const std::vector<T
               std::vector<std::uint32_t>* leaf_order) {
     const float traversal_cost = instances.size() > kLargeScene ? kTraversalCostLarge : kTraversalCostCached;
     std::vector<std::uint32_t> source;
-    Bvh bvh = build_bvh_over_boxes(
-        instances.size(), [&](std::uint32_t i) { return padded_world_bounds(instances[i], meshes); },
-        {traversal_cost, kMaxInstanceLeaf}, threads, source);
+    Bvh bvh;
+    auto box_of = [&](std::uint32_t i) { return padded_world_bounds(instances[i], meshes); };
+    if (meshes && !meshes->empty()) {  // 8-wide (bvh_node.h)
+        bvh.wide = build_wide_bvh<Bvh8Node>(instances.size(), box_of, {traversal_cost, kMaxInstanceLeaf}, threads, source);
+        bvh.wide.nodes.shrink_to_fit();
+        bvh.box = bvh.wide.box;
+    } else {
+        static_cast<BasicBvh<Bvh4Node>&>(bvh) =
+            build_wide_bvh<Bvh4Node>(instances.size(), box_of, {traversal_cost, kMaxInstanceLeaf}, threads, source);
+    }
     const std::size_t n = instances.size();
     if (leaf_order) *leaf_order = source;
     // Reorder the instances to leaf order in place, following the permutation's cycles.

@@ -38,8 +38,16 @@ struct BasicBvh {
     Bounds box;               // of the whole scene
     Bounds bounds() const { return box; }
 };
-using Bvh = BasicBvh<Bvh4Node>;   // the top level, over instances
 using Bvh8 = BasicBvh<Bvh8Node>;  // a mesh's, over its triangles
+
+// The top level, over instances. A scene of unit shapes has it 4-wide (`nodes`: the packet walk
+// and the hand-written single-ray walk of bvh_traverse.cpp read it). A scene with mesh instances
+// has it 8-wide instead (`wide`, `nodes` empty): with the meshes' own 8-wide BVHs a ray runs AVX2
+// box tests all the way down, and its packets go one ray at a time (bvh_packet.cpp).
+struct Bvh : BasicBvh<Bvh4Node> {
+    Bvh8 wide;
+    bool empty() const { return nodes.empty() && wide.nodes.empty(); }
+};
 
 // The costs the binned SAH build weighs: a traversal step against one primitive test, and the
 // most primitives a leaf may hold (<= Bvh4Node::kMaxLeafSize); `block` primitives are tested at

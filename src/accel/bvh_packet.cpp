@@ -19,10 +19,24 @@
 #endif
 
 #include "accel/bvh_packet_shapes.h"
-#include "accel/bvh_mesh_leaf.h"
 #include "accel/bvh_ray.h"
 
 namespace whitted {
+namespace {
+
+// The lanes one at a time: the single-ray query, lane by lane (a scene without SSE, and a scene
+// with meshes, whose top level is 8-wide: bvh_node.h).
+unsigned one_by_one(const Bvh& bvh, const std::vector<Instance>& instances, const Ray (&rays)[kPacketSize],
+                           unsigned active, float t_min, float t_max, Hit (&hits)[kPacketSize],
+                           const std::vector<TriangleMesh>* meshes) {
+    unsigned result = 0;
+    for (int l = 0; l < kPacketSize; ++l)
+        if (((active >> l) & 1) && intersect_nearest(bvh, instances, rays[l], t_min, t_max, hits[l], meshes))
+            result |= 1u << l;
+    return result;
+}
+
+}  // namespace
 
 #ifdef WHITTED_BVH_SSE
 namespace {
@@ -204,7 +218,6 @@ struct Nearest {
     std::uint32_t index[kPacketSize];
     ShapePart part[kPacketSize];
     bool found[kPacketSize];
-    bvh_detail::TriangleState tri[kPacketSize];
 };
 
 // bvh_detail::offer_nearest for the lanes of group g set in `lanes`, given their intervals
@@ -239,21 +252,11 @@ inline void offer4(const packet_shapes::Span4& s, std::uint32_t index, int g, un
 }
 
 // Offers instance `index` to the lanes in `mask`: four lanes at a time for the shapes that
-// bvh_packet_shapes.h has, one lane at a time (bvh_ray.h) for the cone, and for a mesh one lane
-// at a time down its own BVH (bvh_mesh_leaf.h), exactly as the single-ray query does. kMeshes: the
-// scene has mesh instances (else no kind is tested against Mesh).
-template <bool kMeshes>
+// bvh_packet_shapes.h has, one lane at a time (bvh_ray.h) for the cone. (A scene with meshes has
+// an 8-wide top level and no packet walk: bvh_node.h.)
 inline void offer_instance(const Instance& inst, std::uint32_t index, const Ray (&rays)[kPacketSize],
                            const PacketRays& r, unsigned mask, float t_min, float t_max, __m128 tmin, __m128 tmax,
-                           const TriangleMesh* meshes, Nearest& nearest) {
-    if (kMeshes && inst.kind == ShapeKind::Mesh) {
-        for (unsigned m = mask; m != 0; m &= m - 1) {
-            const int l = lowest_bit(m);
-            bvh_detail::offer_mesh_nearest(meshes[inst.mesh], inst, rays[l], index, t_min, t_max, nearest.best[l],
-                                           nearest.index[l], nearest.part[l], nearest.found[l], nearest.tri[l]);
-        }
-        return;
-    }
+                           Nearest& nearest) {
     if (inst.kind == ShapeKind::Cone) {
         for (unsigned m = mask; m != 0; m &= m - 1) {
             const int l = lowest_bit(m);
@@ -285,9 +288,8 @@ struct alignas(16) Entry {
     unsigned mask;
 };
 
-template <bool kSameSigns, bool kCommonOrigin, bool kMeshes>
-unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const TriangleMesh* meshes,
-                  const Ray (&rays)[kPacketSize], const PacketRays& r, unsigned active, float t_min, float t_max,
+template <bool kSameSigns, bool kCommonOrigin>
+unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const Ray (&rays)[kPacketSize], const PacketRays& r, unsigned active, float t_min, float t_max,
                   Hit (&hits)[kPacketSize]) {
     const Bvh4Node* nodes = bvh.nodes.data();
     const Instance* inst = instances.data();
@@ -382,7 +384,7 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
         } else {
             const std::uint32_t first = Bvh4Node::leaf_first(ref), end = first + Bvh4Node::leaf_count(ref);
             for (std::uint32_t i = first; i < end; ++i)
-                offer_instance<kMeshes>(inst[i], i, rays, r, mask, t_min, t_max, tmin, tmax, meshes, nearest);
+                offer_instance(inst[i], i, rays, r, mask, t_min, t_max, tmin, tmax, nearest);
         }
         // Pop, dropping the lanes whose nearest hit is now closer than their entry into the box.
         for (;;) {
@@ -390,11 +392,7 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
                 unsigned result = 0;
                 for (int l = 0; l < kPacketSize; ++l)
                     if (nearest.found[l]) {
-                        if constexpr (kMeshes)
-                            hits[l] = bvh_detail::make_hit(inst, best[l], nearest.index[l], nearest.part[l],
-                                                           nearest.tri[l]);
-                        else
-                            hits[l] = Hit{best[l], nearest.index[l], nearest.part[l]};
+                        hits[l] = Hit{best[l], nearest.index[l], nearest.part[l]};
                         result |= 1u << l;
                     }
                 return result;
@@ -415,15 +413,13 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
 }
 
 // The walk for the packet's kind of rays (one origin? one sign per axis?).
-template <bool kMeshes>
-unsigned dispatch(const Bvh& bvh, const std::vector<Instance>& instances, const TriangleMesh* m,
-                  const Ray (&rays)[kPacketSize], const PacketRays& r, unsigned active, float t_min, float t_max,
-                  Hit (&hits)[kPacketSize]) {
+unsigned dispatch(const Bvh& bvh, const std::vector<Instance>& instances, const Ray (&rays)[kPacketSize],
+                  const PacketRays& r, unsigned active, float t_min, float t_max, Hit (&hits)[kPacketSize]) {
     if (r.common_origin)
-        return r.same_signs ? traverse<true, true, kMeshes>(bvh, instances, m, rays, r, active, t_min, t_max, hits)
-                            : traverse<false, true, kMeshes>(bvh, instances, m, rays, r, active, t_min, t_max, hits);
-    return r.same_signs ? traverse<true, false, kMeshes>(bvh, instances, m, rays, r, active, t_min, t_max, hits)
-                        : traverse<false, false, kMeshes>(bvh, instances, m, rays, r, active, t_min, t_max, hits);
+        return r.same_signs ? traverse<true, true>(bvh, instances, rays, r, active, t_min, t_max, hits)
+                            : traverse<false, true>(bvh, instances, rays, r, active, t_min, t_max, hits);
+    return r.same_signs ? traverse<true, false>(bvh, instances, rays, r, active, t_min, t_max, hits)
+                        : traverse<false, false>(bvh, instances, rays, r, active, t_min, t_max, hits);
 }
 
 }  // namespace
@@ -432,11 +428,11 @@ unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& i
                                   const Ray (&rays)[kPacketSize], unsigned active, float t_min, float t_max,
                                   Hit (&hits)[kPacketSize], const std::vector<TriangleMesh>* meshes) {
     active &= ~0u >> (32 - kPacketSize);
-    if (bvh.nodes.empty() || active == 0) return 0;
-    const PacketRays r(rays, active);
-    if (bvh_detail::has_meshes(meshes))
-        return dispatch<true>(bvh, instances, meshes->data(), rays, r, active, t_min, t_max, hits);
-    return dispatch<false>(bvh, instances, nullptr, rays, r, active, t_min, t_max, hits);
+    if (bvh.empty() || active == 0) return 0;
+    // A scene with meshes: its top level is 8-wide (bvh_node.h), walked one ray at a time.
+    if (bvh.nodes.empty() || bvh_detail::has_meshes(meshes))
+        return one_by_one(bvh, instances, rays, active, t_min, t_max, hits, meshes);
+    return dispatch(bvh, instances, rays, PacketRays(rays, active), active, t_min, t_max, hits);
 }
 
 #else
@@ -445,11 +441,7 @@ unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& i
 unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& instances,
                                   const Ray (&rays)[kPacketSize], unsigned active, float t_min, float t_max,
                                   Hit (&hits)[kPacketSize], const std::vector<TriangleMesh>* meshes) {
-    unsigned result = 0;
-    for (int l = 0; l < kPacketSize; ++l)
-        if (((active >> l) & 1) && intersect_nearest(bvh, instances, rays[l], t_min, t_max, hits[l], meshes))
-            result |= 1u << l;
-    return result;
+    return one_by_one(bvh, instances, rays, active, t_min, t_max, hits, meshes);
 }
 
 #endif

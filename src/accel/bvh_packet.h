@@ -18,7 +18,8 @@ constexpr int kPacketSize = 16;
 // For every lane l whose bit is set in `active`: exactly what
 // intersect_nearest(bvh, instances, rays[l], t_min, t_max, hits[l]) returns (the same t,
 // instance and part, ties to the lowest instance index); bit l of the result says whether it hit.
-// Mesh instances (given `meshes`) are traced one lane at a time down their own BVH.
+// A scene with mesh instances (given `meshes`; its top level is 8-wide, bvh_node.h) is traced one
+// lane at a time.
 // hits[l] is written only for lanes that hit. No allocation.
 unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& instances,
                                   const Ray (&rays)[kPacketSize], unsigned active, float t_min, float t_max,

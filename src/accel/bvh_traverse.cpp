@@ -12,10 +12,13 @@ namespace whitted {
 
 namespace {
 
-// The walk of a scene with mesh instances: the leaves test each instance's kind (a scene without
-// them takes nearest_unit_shapes below; the query decides once which walk to take).
-bool nearest_with_meshes(const Bvh& bvh, const Instance* inst, const TriangleMesh* mesh, const Ray& ray, float t_min,
-                         float t_max, Hit& hit) {
+// The walk of a scene with mesh instances over `tree` (its 8-wide top level, bvh_node.h) with box
+// tester Tester: the leaves test each instance's kind (a scene without them takes
+// nearest_unit_shapes below; the query decides once which walk to take).
+template <class Tester, class Node>
+WHITTED_BVH_INLINE bool nearest_with_meshes_on(const BasicBvh<Node>& tree, const Instance* inst,
+                                               const TriangleMesh* mesh, const Ray& ray, float t_min, float t_max,
+                                               Hit& hit) {
     bool found = false;
     float best = t_max;
     std::uint32_t best_index = 0;
@@ -32,10 +35,30 @@ bool nearest_with_meshes(const Bvh& bvh, const Instance* inst, const TriangleMes
                                       best_part, found);
         }
     };
-    bvh_detail::walk_nearest(bvh, ray, t_min, best, leaf);
+    const bvh_detail::BoxRay box_ray(ray);
+    bvh_detail::walk_nearest_with(Tester(box_ray), tree, t_min, best, leaf);
     if (!found) return false;
     hit = bvh_detail::make_hit(inst, best, best_index, best_part, tri);
     return true;
+}
+
+#ifdef WHITTED_BVH_AVX2
+[[gnu::target("avx2"), gnu::flatten]] bool nearest_with_meshes_avx2(const Bvh8& tree, const Instance* inst,
+                                                                    const TriangleMesh* mesh, const Ray& ray,
+                                                                    float t_min, float t_max, Hit& hit) {
+    return nearest_with_meshes_on<bvh_detail::BoxTesterAvx2>(tree, inst, mesh, ray, t_min, t_max, hit);
+}
+#endif
+
+bool nearest_with_meshes(const Bvh& bvh, const Instance* inst, const TriangleMesh* mesh, const Ray& ray, float t_min,
+                         float t_max, Hit& hit) {
+    if (bvh.wide.nodes.empty())  // a tree built without its 8-wide copy
+        return nearest_with_meshes_on<bvh_detail::BoxTester>(static_cast<const BasicBvh<Bvh4Node>&>(bvh), inst, mesh,
+                                                             ray, t_min, t_max, hit);
+#ifdef WHITTED_BVH_AVX2
+    if (mesh_detail::use_avx2) return nearest_with_meshes_avx2(bvh.wide, inst, mesh, ray, t_min, t_max, hit);
+#endif
+    return nearest_with_meshes_on<bvh_detail::BoxTester>(bvh.wide, inst, mesh, ray, t_min, t_max, hit);
 }
 
 // The walk of a scene of unit shapes alone, written out by hand as before the mesh-capable walk

@@ -26,7 +26,7 @@ glm::vec3 NormalsIntegrator::hit_color(const Ray& ray, const Hit& hit) const {
 }
 
 DepthIntegrator::DepthIntegrator(const Scene& scene, const Camera& camera) : HitViewIntegrator(scene, camera) {
-    if (scene.bvh.nodes.empty()) return;
+    if (scene.bvh.empty()) return;
     // Shade the scene's own distance range from the eye: near = white, far = black.
     const Bounds b = scene.bvh.bounds();
     const glm::vec3 eye = camera.eye;
