@@ -158,9 +158,8 @@ struct ShadowRay {
     float t_max;
 };
 
-Result run_whitted(Setup& s, const std::vector<Ray>& rays, int threads) {
-    Result res;
-    const double rss0 = rss_mb(), peak0 = peak_rss_mb();
+// whitted's scene of the setup's triangles (moved out of it): the mesh and its placements.
+FlatScene whitted_scene(Setup& s) {
     FlatScene flat;
     flat.materials.push_back(Material{});
     flat.meshes.push_back(std::move(s.mesh));
@@ -169,6 +168,24 @@ Result run_whitted(Setup& s, const std::vector<Ray>& rays, int threads) {
         inst.mesh = 0;
         flat.instances.push_back(inst);
     }
+    return flat;
+}
+
+// A shadow ray from every hit toward the light, its origin nudged back off the surface.
+std::vector<ShadowRay> shadow_rays(const Setup& s, const std::vector<Ray>& rays, const std::vector<float>& hit_t) {
+    std::vector<ShadowRay> shadow;
+    for (std::size_t i = 0; i < rays.size(); ++i)
+        if (hit_t[i] >= 0.0f) {
+            const glm::vec3 p = rays[i].at(hit_t[i]) - 1e-3f * rays[i].direction;
+            shadow.push_back({Ray{p, s.light - p}, 1.0f});
+        }
+    return shadow;
+}
+
+Result run_whitted(Setup& s, const std::vector<Ray>& rays, int threads) {
+    Result res;
+    const double rss0 = rss_mb(), peak0 = peak_rss_mb();
+    FlatScene flat = whitted_scene(s);
     const auto t0 = Clock::now();
     const Scene scene = accelerate(std::move(flat), threads);
     res.build_s = seconds_since(t0);
@@ -184,12 +201,9 @@ Result run_whitted(Setup& s, const std::vector<Ray>& rays, int threads) {
     });
     res.primary_per_s = passes_option * double(rays.size()) / tp.wall;
     res.primary_per_cpu_s = passes_option * double(rays.size()) / tp.cpu;
-    std::vector<ShadowRay> shadow;
-    for (std::size_t i = 0; i < rays.size(); ++i)
-        if (found[i]) {
-            const glm::vec3 p = rays[i].at(hits[i].t) - 1e-3f * rays[i].direction;
-            shadow.push_back({Ray{p, s.light - p}, 1.0f});
-        }
+    std::vector<float> hit_t(rays.size());
+    for (std::size_t i = 0; i < rays.size(); ++i) hit_t[i] = found[i] ? hits[i].t : -1.0f;
+    const std::vector<ShadowRay> shadow = shadow_rays(s, rays, hit_t);
     res.hit_fraction = double(shadow.size()) / double(rays.size());
     std::vector<char> blocked(shadow.size());
     const Timing ts = run_parallel(shadow.size(), threads, passes_option, [&](std::size_t b, std::size_t e) {
@@ -203,13 +217,10 @@ Result run_whitted(Setup& s, const std::vector<Ray>& rays, int threads) {
     return res;
 }
 
-Result run_embree(Setup& s, const std::vector<Ray>& rays, int threads) {
-    Result res;
-    const double rss0 = rss_mb(), peak0 = peak_rss_mb();
-    const std::string config = "threads=" + std::to_string(threads);
-    RTCDevice device = rtcNewDevice(config.c_str());
-    const auto t0 = Clock::now();
-    RTCScene mesh_scene = rtcNewScene(device);
+// Embree's scene of the setup's triangles: the mesh scene, and for several placements a scene of
+// instances of it over it (`top`, else the mesh scene itself).
+RTCScene embree_scene(RTCDevice device, const Setup& s, RTCScene& mesh_scene) {
+    mesh_scene = rtcNewScene(device);
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                           3 * sizeof(float), s.mesh.positions.size()));
@@ -234,6 +245,43 @@ Result run_embree(Setup& s, const std::vector<Ray>& rays, int threads) {
         }
         rtcCommitScene(top);
     }
+    return top;
+}
+
+// Embree's nearest hit distance for one camera ray, −1 for none.
+float embree_hit_t(RTCScene top, RTCIntersectContext& ctx, const Ray& ray) {
+    RTCRayHit rh{};
+    rh.ray.org_x = ray.origin.x, rh.ray.org_y = ray.origin.y, rh.ray.org_z = ray.origin.z;
+    rh.ray.dir_x = ray.direction.x, rh.ray.dir_y = ray.direction.y, rh.ray.dir_z = ray.direction.z;
+    rh.ray.tnear = 0.0f;
+    rh.ray.tfar = INFINITY;
+    rh.ray.mask = ~0u;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(top, &ctx, &rh);
+    return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID ? rh.ray.tfar : -1.0f;
+}
+
+// Embree's answer for one shadow ray.
+bool embree_occluded(RTCScene top, RTCIntersectContext& ctx, const ShadowRay& s) {
+    RTCRay r{};
+    r.org_x = s.ray.origin.x, r.org_y = s.ray.origin.y, r.org_z = s.ray.origin.z;
+    r.dir_x = s.ray.direction.x, r.dir_y = s.ray.direction.y, r.dir_z = s.ray.direction.z;
+    r.tnear = 0.0f;
+    r.tfar = s.t_max;
+    r.mask = ~0u;
+    rtcOccluded1(top, &ctx, &r);
+    return r.tfar < 0.0f;  // Embree sets tfar = -inf when occluded
+}
+
+Result run_embree(Setup& s, const std::vector<Ray>& rays, int threads) {
+    Result res;
+    const double rss0 = rss_mb(), peak0 = peak_rss_mb();
+    const std::string config = "threads=" + std::to_string(threads);
+    RTCDevice device = rtcNewDevice(config.c_str());
+    const auto t0 = Clock::now();
+    RTCScene mesh_scene = nullptr;
+    RTCScene top = embree_scene(device, s, mesh_scene);
     res.build_s = seconds_since(t0);
     res.rss_delta_mb = rss_mb() - rss0;
     res.peak_delta_mb = peak_rss_mb() - peak0;
@@ -242,41 +290,18 @@ Result run_embree(Setup& s, const std::vector<Ray>& rays, int threads) {
     const Timing tp = run_parallel(rays.size(), threads, passes_option, [&](std::size_t b, std::size_t e) {
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
-        for (std::size_t i = b; i < e; ++i) {
-            RTCRayHit rh{};
-            rh.ray.org_x = rays[i].origin.x, rh.ray.org_y = rays[i].origin.y, rh.ray.org_z = rays[i].origin.z;
-            rh.ray.dir_x = rays[i].direction.x, rh.ray.dir_y = rays[i].direction.y, rh.ray.dir_z = rays[i].direction.z;
-            rh.ray.tnear = 0.0f;
-            rh.ray.tfar = INFINITY;
-            rh.ray.mask = ~0u;
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(top, &ctx, &rh);
-            hit_t[i] = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID ? rh.ray.tfar : -1.0f;
-        }
+        for (std::size_t i = b; i < e; ++i) hit_t[i] = embree_hit_t(top, ctx, rays[i]);
     });
     res.primary_per_s = passes_option * double(rays.size()) / tp.wall;
     res.primary_per_cpu_s = passes_option * double(rays.size()) / tp.cpu;
-    std::vector<ShadowRay> shadow;
-    for (std::size_t i = 0; i < rays.size(); ++i)
-        if (hit_t[i] >= 0.0f) {
-            const glm::vec3 p = rays[i].at(hit_t[i]) - 1e-3f * rays[i].direction;
-            shadow.push_back({Ray{p, s.light - p}, 1.0f});
-        }
+    const std::vector<ShadowRay> shadow = shadow_rays(s, rays, hit_t);
     res.hit_fraction = double(shadow.size()) / double(rays.size());
     std::vector<char> blocked(shadow.size());
     const Timing ts = run_parallel(shadow.size(), threads, passes_option, [&](std::size_t b, std::size_t e) {
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         for (std::size_t i = b; i < e; ++i) {
-            RTCRay r{};
-            r.org_x = shadow[i].ray.origin.x, r.org_y = shadow[i].ray.origin.y, r.org_z = shadow[i].ray.origin.z;
-            r.dir_x = shadow[i].ray.direction.x, r.dir_y = shadow[i].ray.direction.y, r.dir_z = shadow[i].ray.direction.z;
-            r.tnear = 0.0f;
-            r.tfar = shadow[i].t_max;
-            r.mask = ~0u;
-            rtcOccluded1(top, &ctx, &r);
-            blocked[i] = r.tfar < 0.0f;  // Embree sets tfar = -inf when occluded
+            blocked[i] = embree_occluded(top, ctx, shadow[i]);
         }
     });
     res.shadow_per_s = passes_option * double(shadow.size()) / ts.wall;
@@ -298,50 +323,17 @@ Result run_embree(Setup& s, const std::vector<Ray>& rays, int threads) {
 // figures come from the one-engine runs.
 void run_both(Setup& s, const std::vector<Ray>& rays, int rounds) {
     RTCDevice device = rtcNewDevice(std::getenv("EMBREE_CONFIG") ? std::getenv("EMBREE_CONFIG") : "threads=1");
-    RTCScene mesh_scene = rtcNewScene(device);
-    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                          3 * sizeof(float), s.mesh.positions.size()));
-    std::memcpy(v, s.mesh.positions.data(), s.mesh.positions.size() * 3 * sizeof(float));
-    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                               3 * sizeof(unsigned), s.mesh.triangles.size()));
-    std::memcpy(idx, s.mesh.triangles.data(), s.mesh.triangles.size() * 3 * sizeof(unsigned));
-    rtcCommitGeometry(g);
-    rtcAttachGeometry(mesh_scene, g);
-    rtcReleaseGeometry(g);
-    rtcCommitScene(mesh_scene);
-    RTCScene top = mesh_scene;
-    if (s.placements.size() > 1) {
-        top = rtcNewScene(device);
-        for (const glm::mat4& m : s.placements) {
-            RTCGeometry inst = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
-            rtcSetGeometryInstancedScene(inst, mesh_scene);
-            rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &m[0][0]);
-            rtcCommitGeometry(inst);
-            rtcAttachGeometry(top, inst);
-            rtcReleaseGeometry(inst);
-        }
-        rtcCommitScene(top);
-    }
-    FlatScene flat;
-    flat.materials.push_back(Material{});
-    flat.meshes.push_back(std::move(s.mesh));
-    for (const glm::mat4& m : s.placements) {
-        Instance inst = make_instance(m, ShapeKind::Mesh, 0);
-        inst.mesh = 0;
-        flat.instances.push_back(inst);
-    }
+    RTCScene mesh_scene = nullptr;
+    RTCScene top = embree_scene(device, s, mesh_scene);
+    FlatScene flat = whitted_scene(s);
     const Scene scene = accelerate(std::move(flat), 1);
 
     std::vector<Hit> hits(rays.size());
     std::vector<char> found(rays.size());
     for (std::size_t i = 0; i < rays.size(); ++i) found[i] = scene.intersect(rays[i], hits[i]);
-    std::vector<ShadowRay> shadow;
-    for (std::size_t i = 0; i < rays.size(); ++i)
-        if (found[i]) {
-            const glm::vec3 p = rays[i].at(hits[i].t) - 1e-3f * rays[i].direction;
-            shadow.push_back({Ray{p, s.light - p}, 1.0f});
-        }
+    std::vector<float> hit_t(rays.size());
+    for (std::size_t i = 0; i < rays.size(); ++i) hit_t[i] = found[i] ? hits[i].t : -1.0f;
+    const std::vector<ShadowRay> shadow = shadow_rays(s, rays, hit_t);
     std::vector<char> blocked(shadow.size());
     std::size_t sink = 0;  // results used, so that no pass is optimised away
     auto cpu_time = [](auto&& body) {
@@ -355,18 +347,7 @@ void run_both(Setup& s, const std::vector<Ray>& rays, int rounds) {
     auto embree_primary = [&] {
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
-        for (const Ray& ray : rays) {
-            RTCRayHit rh{};
-            rh.ray.org_x = ray.origin.x, rh.ray.org_y = ray.origin.y, rh.ray.org_z = ray.origin.z;
-            rh.ray.dir_x = ray.direction.x, rh.ray.dir_y = ray.direction.y, rh.ray.dir_z = ray.direction.z;
-            rh.ray.tnear = 0.0f;
-            rh.ray.tfar = INFINITY;
-            rh.ray.mask = ~0u;
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(top, &ctx, &rh);
-            sink += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-        }
+        for (const Ray& ray : rays) sink += embree_hit_t(top, ctx, ray) >= 0.0f;
     };
     auto whitted_shadow = [&] {
         for (std::size_t i = 0; i < shadow.size(); ++i) blocked[i] = scene.occluded(shadow[i].ray, shadow[i].t_max);
@@ -375,14 +356,7 @@ void run_both(Setup& s, const std::vector<Ray>& rays, int rounds) {
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         for (std::size_t i = 0; i < shadow.size(); ++i) {
-            RTCRay r{};
-            r.org_x = shadow[i].ray.origin.x, r.org_y = shadow[i].ray.origin.y, r.org_z = shadow[i].ray.origin.z;
-            r.dir_x = shadow[i].ray.direction.x, r.dir_y = shadow[i].ray.direction.y, r.dir_z = shadow[i].ray.direction.z;
-            r.tnear = 0.0f;
-            r.tfar = shadow[i].t_max;
-            r.mask = ~0u;
-            rtcOccluded1(top, &ctx, &r);
-            sink += r.tfar < 0.0f;
+            sink += embree_occluded(top, ctx, shadow[i]);
         }
     };
     whitted_primary(), embree_primary(), whitted_shadow(), embree_shadow();  // warm the caches
