@@ -2,6 +2,7 @@
 // One engine and one scene per process, so that each process's peak memory is its own:
 //   mesh_bench --engine whitted|embree --scene big|instances --threads 1|2 [--passes 4]
 //   mesh_bench --engine both --scene big|instances [--passes ROUNDS]   (ratios, interleaved: run_both)
+//   --avx2 off: whitted's mesh walks in SSE steps, as on a CPU without AVX2
 // Scenes (generated here, deterministic):
 //   big:       one displaced UV sphere of 1,000,000 triangles (shared vertices), camera at 4 radii.
 //   instances: a 10,000-triangle displaced sphere instanced 10,000 times (100 × 100 grid, random
@@ -401,8 +402,9 @@ int main(int argc, char** argv) {
         else if (k == "--scene") scene = v;
         else if (k == "--threads") threads = std::stoi(v);
         else if (k == "--passes") passes_option = std::max(1, std::stoi(v));
+        else if (k == "--avx2") set_mesh_walks_use_avx2(v != "off");  // off: the SSE walks
         else {
-            std::fprintf(stderr, "usage: mesh_bench --engine whitted|embree|both --scene big|instances --threads N [--passes P]\n");
+            std::fprintf(stderr, "usage: mesh_bench --engine whitted|embree|both --scene big|instances --threads N [--passes P] [--avx2 off]\n");
             return 2;
         }
     }
