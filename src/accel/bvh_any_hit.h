@@ -1,5 +1,6 @@
 #pragma once
-// Any-hit traversal of the 4-wide BVH, as Embree's rtcOccluded with an intersection filter: every
+// Any-hit traversal of the top-level BVH (4-wide; 8-wide in a scene with meshes, accel/bvh_node.h),
+// as Embree's rtcOccluded with an intersection filter: every
 // instance the ray crosses within (t_min, t_max) is offered to a visitor, in no particular order,
 // until the visitor says stop. Occlusion stops at the first; coloured-glass shadows multiply
 // colours and stop at the first opaque one (integrator/glass_transmittance.h). A template, so the
