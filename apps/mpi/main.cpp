@@ -28,6 +28,7 @@ struct MpiOptions {
     std::string checkpoint, resume;
     double checkpoint_every = 5, grace = 0.5;
     std::uint64_t schedule_seed = 0;
+    bool verify = false;
     TestKnobs knobs;
 };
 
@@ -42,10 +43,14 @@ void add_mpi_options(CLI::App& app, MpiOptions& m) {
     app.add_option("--interrupt-grace", m.grace,
                    "Seconds rank 0 waits for tiles in flight after Ctrl-C/SIGTERM before writing the partial image")
         ->check(CLI::Range(0.0, 60.0));
+    app.add_flag("--verify", m.verify,
+                 "Render every tile on two different ranks and compare the bytes (twice the work): a check that "
+                 "the machines of a cluster compute alike");
     // Test-only (hidden): the schedule in a shuffled order, a slowed rank, a rank off by a little.
     app.add_option("--test-schedule-seed", m.schedule_seed)->group("");
     app.add_option("--test-slow-rank", m.knobs.slow_rank)->group("");  // -1: every rank
     app.add_option("--test-slow-ms", m.knobs.slow_ms)->group("");
+    app.add_option("--test-slow-others-ms", m.knobs.others_ms)->group("");
     app.add_option("--test-corrupt-rank", m.knobs.corrupt_rank)->group("");
 }
 
@@ -76,6 +81,10 @@ int run(int argc, char** argv, int rank, int ranks) {
     if (int code = parse_render_options(app, o, argc, argv, "whitted-mpi"); code != kExitOk) return code < 0 ? 0 : code;
     if (rank != 0) std::cerr.clear();
     if (!same_binary_and_options(argc, argv, rank, ranks)) return kExitUsage;
+    if (m.verify && ranks < 2) {
+        std::cerr << "whitted-mpi: error: --verify needs at least two ranks (mpirun -np 2 or more)\n";
+        return kExitUsage;
+    }
 
     install_interrupt_handler();
     SharedScene shared = share_scene(o, rank, &interrupt_flag());
@@ -97,6 +106,7 @@ int run(int argc, char** argv, int rank, int ranks) {
     s.options = &o;
     s.job_hash = fnv1a(pixel_options(o, m), shared.hash);
     s.schedule_seed = m.schedule_seed;
+    s.verify = m.verify;
     s.checkpoint = m.checkpoint;
     s.resume = m.resume;
     s.checkpoint_seconds = m.checkpoint_every;

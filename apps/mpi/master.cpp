@@ -83,21 +83,25 @@ struct Master {
     std::uint64_t bytes_received = 0;
 
     Master(const RankSetup& setup, Film f, const std::vector<bool>& done)
-        : s(setup), film(std::move(f)), schedule(setup.grid.count(), setup.ranks, setup.schedule_seed, done),
+        : s(setup), film(std::move(f)),
+          schedule(setup.grid.count(), setup.ranks, setup.schedule_seed, done, setup.verify ? 2 : 1),
           progress(setup.grid.count(), setup.ranks, !setup.options->quiet),
           threads_of(std::size_t(setup.ranks), 1), bye(std::size_t(setup.ranks), false),
           stats(std::size_t(setup.ranks)) {
         bye[0] = true;  // rank 0 talks to itself without messages
     }
 
-    // A share's tile t has arrived in `from`: keep the first copy, compare any other with it.
+    // A share's tile t has arrived in `from`: keep the first copy, compare any other with it; the
+    // tile is done (checkpointed, counted) once the copies the schedule asks for are in.
     void merge_tile(int rank, int t, const Film& from) {
         const Tile r = s.grid.tile(t);
-        if (schedule.finish(t)) {
-            film.copy_from(from, r);
+        const int copy = schedule.arrive(t);
+        if (copy == 1) film.copy_from(from, r);
+        if (copy == schedule.copies()) {
             checkpoint.append(t, film);
             progress.add(rank, 1, 0);
-        } else if (!same_pixels(film, from, r) && mismatch.empty()) {
+        }
+        if (copy > 1 && !same_pixels(film, from, r) && mismatch.empty()) {
             mismatch = "rank " + std::to_string(rank) + " rendered tile " + std::to_string(t) + " (pixels " +
                        std::to_string(r.x0) + "," + std::to_string(r.y0) +
                        ") to other bytes than the rank that rendered it first: the ranks do not compute alike "
@@ -248,9 +252,11 @@ int Master::run() {
 
 void Master::print_stats(double wall, double local_busy) const {
     std::fprintf(stderr,
-                 "ranks %d, tiles %d (%dx%d px), duplicates sent %d; setup %.3fs (broadcast %zu bytes in %.3fs); "
+                 "ranks %d, tiles %d (%dx%d px), %d %s; setup %.3fs (broadcast %zu bytes in %.3fs); "
                  "render %.3fs, %.2f Mrays/s\n",
-                 s.ranks, s.grid.count(), s.grid.size, s.grid.size, schedule.duplicates_sent(), s.setup_seconds,
+                 s.ranks, s.grid.count(), s.grid.size, s.grid.size,
+                 s.verify ? schedule.done_count() : schedule.duplicates_sent(),
+                 s.verify ? "rendered twice and compared" : "duplicates sent", s.setup_seconds,
                  s.broadcast_bytes, s.broadcast_seconds, wall, wall > 0 ? double(progress.rays()) / wall * 1e-6 : 0.0);
     std::fprintf(stderr, "master: %ld requests served, %.1f us mean, %.1f us max; %llu bytes received (%.0f per tile)\n",
                  services, services ? service_total / double(services) * 1e6 : 0.0, service_max * 1e6,

@@ -24,6 +24,7 @@ struct RankSetup {
     const cli::RenderOptions* options = nullptr;
     std::uint64_t job_hash = 0;  // for the checkpoint
     std::uint64_t schedule_seed = 0;
+    bool verify = false;  // every tile rendered by two ranks and compared
     std::string checkpoint, resume;
     double checkpoint_seconds = 5, grace_seconds = 0.5;
     double setup_seconds = 0, broadcast_seconds = 0;

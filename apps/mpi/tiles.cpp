@@ -23,8 +23,7 @@ RenderedShare render_share(const Integrator& integrator, const RenderJob& job, c
     j.tile_size = grid.size;
     std::mutex m;
     j.on_tile = [&](const Tile& r) {
-        if (knobs.slows(rank))
-            std::this_thread::sleep_for(std::chrono::milliseconds(knobs.slow_ms));
+        if (const int ms = knobs.delay_ms(rank); ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(ms));
         std::lock_guard lock(m);
         share.tiles.push_back(grid.index_of(r));
     };

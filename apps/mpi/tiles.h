@@ -49,10 +49,11 @@ struct RenderedShare {
     double seconds = 0;
 };
 
-// Test-only knobs (hidden options): a slowed rank (-1: every rank), a rank whose pixels are off by a little.
+// Test-only knobs (hidden options): a slowed rank (-1: every rank), the other ranks slowed less (so
+// that the slowed rank, even if it starts late, still gets tiles), a rank whose pixels are off by a little.
 struct TestKnobs {
-    int slow_rank = -1, slow_ms = 0;
-    bool slows(int rank) const { return slow_ms > 0 && (slow_rank < 0 || slow_rank == rank); }
+    int slow_rank = -1, slow_ms = 0, others_ms = 0;
+    int delay_ms(int rank) const { return slow_rank < 0 || slow_rank == rank ? slow_ms : others_ms; }
     int corrupt_rank = -1;
 };
 

@@ -1,6 +1,7 @@
 // whitted-mpi's schedule: every tile handed out exactly once before the tail, guided share sizes
 // (about remaining / (2 · ranks), at least what the rank renders at once), duplicates only at the
-// tail and only to another rank, a resumed job skipping its finished tiles.
+// tail and only to another rank, a resumed job skipping its finished tiles, and --verify's two
+// copies of every tile on two different ranks.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -57,16 +58,17 @@ TEST(Schedule, TailDuplicatesGoToAnotherRankOnceAndTheFirstAnswerCounts) {
     const std::vector<int> a = s.next(0, 4);  // rank 0 holds every tile
     ASSERT_EQ(a.size(), 4u);
     EXPECT_TRUE(s.next(0, 4).empty());  // never its own tiles again
-    EXPECT_TRUE(s.finish(0));
+    EXPECT_EQ(s.arrive(0), 1);
     const std::vector<int> dup = s.next(1, 2);  // the tail: two of the three still out
     EXPECT_EQ(dup, (std::vector<int>{1, 2}));
     EXPECT_EQ(s.next(1, 2), (std::vector<int>{3}));
     EXPECT_TRUE(s.next(1, 2).empty());  // each copied once
     EXPECT_EQ(s.duplicates_sent(), 3);
-    EXPECT_TRUE(s.finish(1));
-    EXPECT_FALSE(s.finish(1));  // the second copy is a duplicate
+    EXPECT_EQ(s.arrive(1), 1);
+    EXPECT_EQ(s.arrive(1), 2);  // the second copy is a duplicate, compared with the first
+    EXPECT_EQ(s.done_count(), 2);
     EXPECT_FALSE(s.all_done());
-    for (int t : {2, 3}) s.finish(t);
+    for (int t : {2, 3}) s.arrive(t);
     EXPECT_TRUE(s.all_done());
 }
 
@@ -79,6 +81,63 @@ TEST(Schedule, ResumedTilesAreNotHandedOut) {
     for (std::vector<int> share; got.size() < 4 && !(share = s.next(0, 1)).empty();)
         got.insert(got.end(), share.begin(), share.end());
     EXPECT_EQ(got, (std::vector<int>{0, 2, 3, 5}));
+}
+
+// Hands out every tile of `s` to ranks asking in turn (each `threads` at once) until none gets
+// anything; returns per tile the ranks that got it.
+std::vector<std::vector<int>> hand_out_all(Schedule& s, int ranks, int threads) {
+    std::vector<std::vector<int>> got(std::size_t(s.tile_count()));
+    for (int idle = 0, r = 0; idle < ranks; r = (r + 1) % ranks) {
+        const std::vector<int> share = s.next(r, threads);
+        idle = share.empty() ? idle + 1 : 0;
+        for (int t : share) got[std::size_t(t)].push_back(r);
+    }
+    return got;
+}
+
+TEST(Schedule, VerifyHandsEveryTileToTwoDifferentRanksWithoutATail) {
+    for (int ranks : {2, 3, 5})
+        for (std::uint64_t seed : {0, 7}) {
+            Schedule s(57, ranks, seed, {}, 2);
+            const std::vector<std::vector<int>> got = hand_out_all(s, ranks, 3);
+            for (int t = 0; t < 57; ++t) {
+                ASSERT_EQ(got[std::size_t(t)].size(), 2u) << "tile " << t << ", " << ranks << " ranks";
+                EXPECT_NE(got[std::size_t(t)][0], got[std::size_t(t)][1]) << "tile " << t;
+            }
+            EXPECT_EQ(s.duplicates_sent(), 0);
+        }
+}
+
+TEST(Schedule, VerifyLeavesARanksOwnTilesToAnother) {
+    Schedule s(4, 2, 0, {}, 2);
+    EXPECT_EQ(s.next(0, 4), (std::vector<int>{0, 1, 2, 3}));  // rank 0: every first copy
+    EXPECT_TRUE(s.next(0, 4).empty());                        // nothing it may render twice
+    EXPECT_EQ(s.next(1, 4), (std::vector<int>{0, 1, 2, 3}));  // the second copies: rank 1
+    EXPECT_TRUE(s.next(1, 4).empty());
+}
+
+TEST(Schedule, VerifiedTileIsDoneAtItsSecondCopy) {
+    std::vector<bool> done(3, false);
+    done[2] = true;  // resumed: done already, never handed out again
+    Schedule s(3, 2, 0, done, 2);
+    EXPECT_EQ(s.done_count(), 1);
+    EXPECT_EQ(s.arrive(0), 1);
+    EXPECT_FALSE(s.is_done(0));
+    EXPECT_EQ(s.arrive(0), 2);
+    EXPECT_TRUE(s.is_done(0));
+    EXPECT_EQ(s.arrive(1), 1);
+    EXPECT_FALSE(s.all_done());
+    EXPECT_EQ(s.arrive(1), 2);
+    EXPECT_TRUE(s.all_done());
+    const std::vector<std::vector<int>> got = hand_out_all(s, 2, 1);
+    EXPECT_TRUE(got[2].empty());
+}
+
+TEST(Schedule, VerifySharesStayGuided) {
+    // 100 tiles twice over 2 ranks: the first share is a quarter of the 200 copies to render.
+    Schedule s(100, 2, 0, {}, 2);
+    EXPECT_EQ(s.next(0, 1).size(), 50u);
+    EXPECT_EQ(s.next(1, 1).size(), 38u);  // 150 / 4, rounded up
 }
 
 TEST(Schedule, StoppedHandsOutNothing) {
