@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "util/big_vector.h"
+
 #include "shapes/bounds.h"
 
 namespace whitted {
@@ -34,7 +36,7 @@ static_assert(sizeof(Bvh8Node) == 256);
 
 template <class Node>
 struct BasicBvh {
-    std::vector<Node> nodes;  // nodes[0] is the root; empty for an empty scene
+    BigVector<Node> nodes;  // nodes[0] is the root; empty for an empty scene
     Bounds box;               // of the whole scene
     Bounds bounds() const { return box; }
 };

@@ -18,9 +18,9 @@ namespace {
 constexpr BvhBuildCosts kTriangleCosts{2.0f, 8, 4};
 
 template <class T>
-void permute(std::vector<T>& v, const std::vector<std::uint32_t>& order) {
+void permute(BigVector<T>& v, const std::vector<std::uint32_t>& order) {
     if (v.empty()) return;
-    std::vector<T> out(order.size());
+    BigVector<T> out(order.size());
     for (std::size_t k = 0; k < order.size(); ++k) out[k] = v[order[k]];
     v.swap(out);
 }

@@ -4,8 +4,8 @@
 
 namespace whitted {
 
-template <class V>
-static std::size_t bytes_of(const std::vector<V>& v) {
+template <class V, class A>
+static std::size_t bytes_of(const std::vector<V, A>& v) {
     return v.capacity() * sizeof(V);
 }
 

@@ -12,6 +12,7 @@
 
 #include "accel/bvh_node.h"
 #include "mesh/triangle_block.h"
+#include "util/big_vector.h"
 
 namespace whitted {
 
@@ -20,18 +21,18 @@ using TriangleIndices = std::array<std::uint32_t, 3>;
 struct TriangleMesh {
     // One index per corner for all of a vertex's attributes (the OBJ reader makes a vertex per
     // distinct v/vt/vn of the file's corners, as pbrt and Embree keep meshes).
-    std::vector<glm::vec3> positions;
-    std::vector<TriangleIndices> triangles;  // into positions, counter-clockwise seen from outside
+    BigVector<glm::vec3> positions;
+    BigVector<TriangleIndices> triangles;  // into positions, counter-clockwise seen from outside
     // Per vertex, as positions; empty when the file gives none. A vertex whose corner had no normal
     // holds (0, 0, 0) (its triangles take their geometric normal), one without vt (NaN, NaN) (its
     // triangles take uv (0, 0)).
-    std::vector<glm::vec3> normals;
-    std::vector<glm::vec2> uvs;
+    BigVector<glm::vec3> normals;
+    BigVector<glm::vec2> uvs;
     Bvh8 bvh;      // over `triangles`, whose order it set (build_mesh_bvh); its leaves index `blocks`
     // The leaves' triangles four to a block, in leaf order, and each block's first triangle (the
     // others follow it in `triangles`).
-    std::vector<TriangleBlock> blocks;
-    std::vector<std::uint32_t> block_first_triangle;
+    BigVector<TriangleBlock> blocks;
+    BigVector<std::uint32_t> block_first_triangle;
     Bounds box;    // of all positions used by triangles
     std::string path;  // the file it came from, for messages
 

@@ -241,7 +241,7 @@ TEST(MeshMemory, MeshAndItsBvhTakeAtMost100BytesPerTriangle) {
     // Without normals and uvs (a flat, untextured mesh) it costs their values less: 12 and 8
     // bytes per vertex (the corners share one index array).
     TriangleMesh flat = test::uv_sphere(400, 400);
-    std::vector<glm::vec3>().swap(flat.normals);  // (= {} would keep the capacity)
+    BigVector<glm::vec3>().swap(flat.normals);  // (= {} would keep the capacity)
     build_mesh_bvh(flat);
     const double attributes = 20.0 * double(flat.positions.size()) / double(flat.triangle_count());
     EXPECT_NEAR(double(flat.memory_bytes()) / double(flat.triangle_count()), per_triangle - attributes, 0.01);
