@@ -251,12 +251,15 @@ void RenderController::run(std::shared_ptr<Job> job) {
     pass.cancel = &job->cancel;
     pass.on_tile = [&](const Tile& t) {
         // Runs on the render thread that finished the tile, so reading its film pixels is race-free.
-        std::lock_guard lock(mutex_);
-        if (!is_current()) return;
-        film.write_to(image_, t);
-        ++status_.tiles_done;
-        if (status_.tiles_done == s.tile_count()) status_.preview_divisor = 1;  // the first full pass is in
-        ++image_version_;
+        {
+            std::lock_guard lock(mutex_);
+            if (!is_current()) return;
+            film.write_to(image_, t);
+            ++status_.tiles_done;
+            if (status_.tiles_done == s.tile_count()) status_.preview_divisor = 1;  // the first full pass is in
+            ++image_version_;
+        }
+        if (after_tile_) after_tile_(job->id);
     };
     bool cancelled = false;
     for (std::size_t i = 0; i < passes.size() && !cancelled; ++i) {

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -112,6 +113,11 @@ public:
     // Waits (up to the timeout) until no job thread runs at all, including cancelled ones.
     bool wait_all_threads(std::chrono::milliseconds timeout);
 
+    // Tests only: called on a render thread after each tile it finished has reached the image,
+    // outside the lock, with the job's number; a test holds a job in the middle of its render here
+    // (to show that start() and stop() never wait for it). Set before the first start().
+    void set_after_tile_hook_for_tests(std::function<void(std::uint64_t job)> hook) { after_tile_ = std::move(hook); }
+
 private:
     struct Job;
     void launch(std::shared_ptr<Job> job);
@@ -129,6 +135,7 @@ private:
     Shown shown_;  // what image_ is a render of
     std::uint64_t image_version_ = 0;
     std::uint64_t next_job_ = 0;
+    std::function<void(std::uint64_t)> after_tile_;
 
     // The last scene loaded successfully, reused while its file and options are unchanged.
     struct Cached {

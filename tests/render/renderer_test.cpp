@@ -169,28 +169,23 @@ TEST(Renderer, CancelStopsAfterTheCurrentRowsAndLeavesTheRestBlack) {
 
 TEST(Renderer, CancelReturnsPromptlyFromABigRender) {
     // Seconds of work if it ran to the end; once the flag is set the workers finish at most the
-    // row they are on, so render() returns within a few rows' time.
+    // row they are on and take no new tile, so render() returns having done a handful of tiles of
+    // 16384 (counted, not timed: a loaded machine makes any time bound flaky).
     Scene scene = busy_scene();
     std::atomic<bool> cancel{false};
     std::atomic<int> tiles{0};
-    std::chrono::steady_clock::time_point cancelled_at;
     RenderJob o;
     o.width = 4096;
     o.height = 4096;
     o.threads = 2;
     o.cancel = &cancel;
     o.on_tile = [&](const Tile&) {
-        if (++tiles == 2) {
-            cancelled_at = std::chrono::steady_clock::now();
-            cancel = true;
-        }
+        if (++tiles == 2) cancel = true;
     };
     Image img(o.width, o.height);
     RenderStats s = render(scene, o, img);
-    const double after = std::chrono::duration<double>(std::chrono::steady_clock::now() - cancelled_at).count();
     EXPECT_TRUE(s.cancelled);
     EXPECT_LT(s.tiles_done, 16);
-    EXPECT_LT(after, 1.0) << "seconds from the cancel to the return";
     EXPECT_EQ(img.at(4095, 4095), glm::u8vec3(0));
 }
 

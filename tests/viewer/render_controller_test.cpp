@@ -4,11 +4,14 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
+#include <mutex>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -84,6 +87,68 @@ const char* kBallScene = R"(camera [ eye 0 0 5 focus 0 0 0 ]
 light [ position 2 2 5 color 1 1 1 ]
 mastersubgraph root [ trans [ object sphere [ diffuse 1 0 0 ] ] ]
 )";
+
+// Holds the render threads of one job, each at a finished tile once `after` tiles are in, until
+// opened: a job that is certainly still in the middle of its render, whatever the machine's load.
+class TileGate {
+public:
+    TileGate(std::uint64_t job, int after) : job_(job), after_(after) {}
+    void at_tile(std::uint64_t job) {  // the controller's after-tile hook
+        std::unique_lock lock(mutex_);
+        if (job != job_ || ++tiles_ < after_) return;
+        held_ = true;
+        changed_.notify_all();
+        changed_.wait(lock, [&] { return open_; });
+    }
+    bool wait_held(std::chrono::milliseconds timeout) {
+        std::unique_lock lock(mutex_);
+        return changed_.wait_for(lock, timeout, [&] { return held_; });
+    }
+    bool is_open() {
+        std::lock_guard lock(mutex_);
+        return open_;
+    }
+    void open() {
+        std::lock_guard lock(mutex_);
+        open_ = true;
+        changed_.notify_all();
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::uint64_t job_;
+    int after_, tiles_ = 0;
+    bool held_ = false, open_ = false;
+};
+
+// Opens the gate when the test ends however it ends, before the controller joins the threads.
+struct GateOpener {
+    TileGate& gate;
+    ~GateOpener() { gate.open(); }
+};
+
+// Calls f() while the gate holds a job; a watchdog opens the gate if f() has not returned after
+// a minute, so that a call that waits for the held job fails the test instead of hanging it.
+// Returns whether f() returned with the gate still shut: without waiting for the held job.
+bool returns_while_held(TileGate& gate, const std::function<void()>& f) {
+    std::mutex m;
+    std::condition_variable cv;
+    bool returned = false;
+    std::thread watchdog([&] {
+        std::unique_lock lock(m);
+        if (!cv.wait_for(lock, 60s, [&] { return returned; })) gate.open();
+    });
+    f();
+    const bool without_waiting = !gate.is_open();
+    {
+        std::lock_guard lock(m);
+        returned = true;
+    }
+    cv.notify_all();
+    watchdog.join();
+    return without_waiting;
+}
 
 TEST(RenderController, StartsIdle) {
     RenderController c;
@@ -203,28 +268,27 @@ TEST(RenderController, StopKeepsThePassesDone) {
 }
 
 TEST(RenderController, StopIsImmediateAndKeepsWhatWasRendered) {
+    TileGate gate(1, 4);  // the job held in its render once four tiles are in
     RenderController c;
+    c.set_after_tile_hook_for_tests([&gate](std::uint64_t job) { gate.at_tile(job); });
+    GateOpener opener{gate};
     c.start(busy_scene(), heavy_settings());
-    // Wait for a few tiles.
-    const auto deadline = Clock::now() + 30s;
-    while (c.status().tiles_done < 4 && Clock::now() < deadline) std::this_thread::sleep_for(2ms);
-    ASSERT_GE(c.status().tiles_done, 4);
+    ASSERT_TRUE(gate.wait_held(60s));
 
-    const auto t0 = Clock::now();
-    c.stop();
-    const auto stop_took = Clock::now() - t0;
-    EXPECT_LT(stop_took, 50ms) << "stop() must not wait for the render";
+    EXPECT_TRUE(returns_while_held(gate, [&] { c.stop(); })) << "stop() waited for the render";
     RenderStatus st = c.status();
     EXPECT_EQ(st.state, RenderState::Stopped);
+    EXPECT_GE(st.tiles_done, 4);
     EXPECT_LT(st.tiles_done, st.tiles_total);
-    EXPECT_TRUE(c.wait_all_threads(500ms)) << "the render threads should end within a fraction of a second";
+    const Image img = c.image();
+    gate.open();
+    EXPECT_TRUE(c.wait_all_threads(30s)) << "the render threads should end within a tile row of the gate opening";
 
-    // The finished tiles are kept, the rest is black, and nothing arrives after the stop.
-    Image img = c.image();
+    // The finished tiles are kept, the rest is black, and nothing arrives after the stop: the held
+    // threads went on after it, with a tile done and maybe more rows.
     ASSERT_EQ(img.width, 1600);
     EXPECT_GT(lit_bytes(img), 0u);
     EXPECT_EQ(img.at(1599, 1199), glm::u8vec3(0));
-    std::this_thread::sleep_for(100ms);
     EXPECT_EQ(c.status().tiles_done, st.tiles_done);
     EXPECT_EQ(c.image().rgb, img.rgb);
     const double frozen = c.status().elapsed_seconds;
@@ -247,10 +311,13 @@ TEST(RenderController, StopWhenIdleOrFinishedChangesNothing) {
 }
 
 TEST(RenderController, RestartWhileRunningCancelsThePreviousJob) {
+    TileGate gate(1, 1);  // the first job held in its render at its first tile
     RenderController c;
+    c.set_after_tile_hook_for_tests([&gate](std::uint64_t job) { gate.at_tile(job); });
+    GateOpener opener{gate};
     auto scene = busy_scene();
     c.start(scene, heavy_settings());
-    ASSERT_TRUE(wait_first_tile(c, 60s));
+    ASSERT_TRUE(gate.wait_held(60s));
 
     RenderJob small;
     small.width = 64;
@@ -258,19 +325,21 @@ TEST(RenderController, RestartWhileRunningCancelsThePreviousJob) {
     small.threads = 2;
     small.sampling.aa = 2;  // the settings of the new job, anti-aliasing included, reach its render
     small.sampling.aa_threshold = 0.05f;
-    const auto t0 = Clock::now();
-    c.start(scene, small);
-    EXPECT_LT(Clock::now() - t0, 50ms) << "start() must not wait for the previous render";
-    ASSERT_TRUE(c.wait(30s));
+    EXPECT_TRUE(returns_while_held(gate, [&] { c.start(scene, small); }))
+        << "start() waited for the previous render";
+    ASSERT_TRUE(c.wait(30s)) << "the new job finishes while the old one is held";
     RenderStatus st = c.status();
     EXPECT_EQ(st.job, 2u);
     EXPECT_EQ(st.state, RenderState::Finished);
     EXPECT_EQ(st.tiles_done, st.tiles_total);
-    EXPECT_TRUE(c.wait_all_threads(500ms)) << "the first job's threads should have stopped";
+    EXPECT_GE(c.reap(), 1) << "the first job is still held";
+    // The first job goes on after the second finished: its late tiles never reach the image.
+    gate.open();
+    EXPECT_TRUE(c.wait_all_threads(30s)) << "the first job's threads should have stopped";
+    EXPECT_EQ(c.status().tiles_done, st.tiles_done);
     Image img = c.image();
     EXPECT_EQ(img.width, 64);
     EXPECT_EQ(img.height, 48);
-    // The late tiles of the first job never reach the second job's image.
     RenderJob o;
     o.width = 64;
     o.height = 48;
