@@ -2,6 +2,9 @@
 # Builds the libFuzzer targets of fuzz/ with clang, AddressSanitizer and UBSan, and runs each.
 # Usage: scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]   (default: 60 seconds, every target)
 #   FUZZ_BUILD=DIR   build directory (default: build-fuzz); its corpus/<target>/ keeps what was found
+#   FUZZ_SEED=N      libFuzzer's random seed (default 0: a new one each run, printed in the log as
+#                    "Seed: N"); scripts/test.sh fixes it, so that CI tries the same inputs in the
+#                    same order every run (how many of them depends on the machine's speed)
 # Exits non-zero on the first target that finds a crash, a leak, a timeout or memory above the
 # limit; the input that did it is left in the build directory as crash-*/timeout-*/oom-* (reproduce
 # with `BUILD/fuzz/TARGET FILE`).
@@ -42,7 +45,7 @@ for t in "${targets[@]}"; do
     esac
     echo "== $t: ${seconds}s"
     (cd "$build" && "$build/fuzz/$t" "$corpus" "$seed" "${dict[@]}" -max_len="$max_len" \
-        -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 2>"$build/$t.log") || {
+        -seed="${FUZZ_SEED:-0}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 2>"$build/$t.log") || {
         tail -n 60 "$build/$t.log"
         echo "fuzz: $t found a problem; see $build/$t.log and the crash-/timeout-/oom- file in $build" >&2
         exit 1

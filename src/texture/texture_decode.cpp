@@ -11,6 +11,7 @@
 #include "parse/read_file.h"
 #include "texture/ascii_ppm.h"
 #include "texture/jpeg_decode.h"
+#include "texture/png_check.h"
 
 namespace whitted {
 namespace {
@@ -111,6 +112,8 @@ std::string decode_texture(std::string_view bytes, const TextureLimits& limits, 
     if (const std::uint64_t promised = promised_bytes(bytes); promised > bytes.size())
         return "the file ends before its last pixel (truncated: " + std::to_string(bytes.size()) + " of " +
                std::to_string(promised) + " bytes)";
+    if (starts_with(bytes, "\x89PNG\r\n\x1a\n"))
+        if (std::string why = check_png(bytes); !why.empty()) return why;
     unsigned char* rgb = stbi_load_from_memory(data, size, &w, &h, &n, 3);
     if (!rgb) return stbi_failure_reason() ? stbi_failure_reason() : "?";
     if (decoded_past_the_end(bytes, rgb, w, h)) {

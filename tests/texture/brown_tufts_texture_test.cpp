@@ -103,6 +103,10 @@ TEST(AsciiPpm, DecodesPlainPpm) {
     EXPECT_NE(why.find("ends before its last pixel"), std::string::npos);
     EXPECT_FALSE(decode_ascii_ppm("P3 1 1 255 1 2 300", img, why));  // above maxval
     EXPECT_FALSE(decode_ascii_ppm("P3 99999 99999 255", img, why));  // absurd size, no allocation
+    // The fuzzer's header: sides whose product does not fit in 64 bits (undefined behaviour when it
+    // was computed first; UBSan stops this test in the sanitizer build).
+    EXPECT_FALSE(decode_ascii_ppm("P3\n61000000000\n90000000000\n255\n", img, why));
+    EXPECT_NE(why.find("61000000000x90000000000 texels: more than 16384 across or down"), std::string::npos) << why;
     EXPECT_FALSE(decode_ascii_ppm("P3 x", img, why));
     EXPECT_TRUE(is_ascii_ppm("P3\n1 1 1 0 0 0"));
     EXPECT_FALSE(is_ascii_ppm("P6\n1 1 255\n"));
