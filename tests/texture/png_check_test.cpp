@@ -24,6 +24,21 @@ void chunk(std::string& png, const char* type, const std::string& data) {
     put32(png, std::uint32_t(crc32(0, reinterpret_cast<const Bytef*>(typed.data()), uInt(typed.size()))));
 }
 
+// A raw deflate stream (no zlib header or checksum), as Apple's CgBI PNGs hold.
+std::string deflated_raw(const std::string& raw) {
+    z_stream z{};
+    EXPECT_EQ(deflateInit2(&z, 9, Z_DEFLATED, -MAX_WBITS, 8, Z_DEFAULT_STRATEGY), Z_OK);
+    std::string out(deflateBound(&z, uLong(raw.size())), '\0');
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(raw.data()));
+    z.avail_in = uInt(raw.size());
+    z.next_out = reinterpret_cast<Bytef*>(out.data());
+    z.avail_out = uInt(out.size());
+    EXPECT_EQ(deflate(&z, Z_FINISH), Z_STREAM_END);
+    out.resize(z.total_out);
+    deflateEnd(&z);
+    return out;
+}
+
 std::string deflated(const std::string& raw) {
     uLongf n = compressBound(uLong(raw.size()));
     std::string out(n, '\0');
@@ -34,17 +49,22 @@ std::string deflated(const std::string& raw) {
     return out;
 }
 
-// An 8-bit RGB PNG of w × h whose IDAT is the zlib stream of `filtered` (rows of a filter byte
-// and the pixels), built by hand with zlib, independent of the code under test.
-std::string rgb_png(std::uint32_t w, std::uint32_t h, const std::string& filtered) {
+// An 8-bit RGB PNG of w × h whose IDAT holds `idat` (by default the zlib stream of `filtered`:
+// rows of a filter byte and the pixels), built by hand with zlib, independent of the code under test.
+std::string png_with_idat(std::uint32_t w, std::uint32_t h, const std::string& idat, bool cgbi = false) {
     std::string png("\x89PNG\r\n\x1a\n", 8), ihdr;
+    if (cgbi) chunk(png, "CgBI", std::string("\x50\x00\x20\x02", 4));
     put32(ihdr, w);
     put32(ihdr, h);
     ihdr += std::string("\x08\x02\x00\x00\x00", 5);  // 8 bits, RGB, deflate, filter 0, not interlaced
     chunk(png, "IHDR", ihdr);
-    chunk(png, "IDAT", deflated(filtered));
+    chunk(png, "IDAT", idat);
     chunk(png, "IEND", "");
     return png;
+}
+
+std::string rgb_png(std::uint32_t w, std::uint32_t h, const std::string& filtered) {
+    return png_with_idat(w, h, deflated(filtered));
 }
 
 // Rows with filter 0 ("none") and pixel (x, y) = (x, y, x + y): 1 + 3w bytes a row.
@@ -125,6 +145,33 @@ TEST(PngCheck, PixelDataThatInflatesFarBeyondTheImageIsRefused) {
     TextureImage img;
     const std::string why = decode_texture(png, {}, img);
     EXPECT_NE(why.find("inflates to more than twice the 392 bytes its pixels need"), std::string::npos) << why;
+}
+
+TEST(PngCheck, ABombStbWouldInflateWithoutZlibsChecksIsRefusedToo) {
+    const std::string bomb = deflated(std::string(16u << 20, '\0'));
+    // A window of 64 KB in the zlib header (CINFO 10; FCHECK made right): zlib refuses it, stb
+    // does not look and would inflate all 16 MB.
+    std::string wide = bomb;
+    wide[0] = char(0xA8);
+    wide[1] = char(31 - (0xA8 * 256) % 31);
+    ASSERT_EQ((std::uint8_t(wide[0]) * 256 + std::uint8_t(wide[1])) % 31, 0);
+    TextureImage img;
+    std::string why = decode_texture(png_with_idat(16, 8, wide), {}, img);
+    EXPECT_NE(why.find("not a valid zlib stream (zlib: invalid window size)"), std::string::npos) << why;
+    // Apple's CgBI PNGs hold raw deflate streams, which stb reads too: counted the same way.
+    why = check_png(png_with_idat(16, 8, deflated_raw(std::string(16u << 20, '\0')), true));
+    EXPECT_NE(why.find("inflates to more than twice"), std::string::npos) << why;
+    EXPECT_EQ(check_png(png_with_idat(16, 8, deflated_raw(rows(16, 8)), true)), "");
+    // A wrong checksum at the end of the stream, which stb does not check: all the data was counted
+    // before it, and the image decodes as it always did.
+    std::string bad_sum = deflated(rows(16, 8));
+    bad_sum.back() = char(bad_sum.back() ^ 1);
+    EXPECT_EQ(decode_texture(png_with_idat(16, 8, bad_sum), {}, img), "");
+    EXPECT_EQ(img.rgb[(3 * 16 + 5) * 3 + 2], 8);
+    // Other corrupt data is refused with zlib's reason (stb refuses it too).
+    std::string corrupt = deflated(rows(16, 8));
+    corrupt[2] = char(0xFF);  // block type 3, which does not exist
+    EXPECT_NE(check_png(png_with_idat(16, 8, corrupt)).find("zlib: invalid block type"), std::string::npos);
 }
 
 TEST(PngCheck, ImagesSplitOverManyIdatChunksAreCheckedAsOneStream) {
