@@ -35,10 +35,10 @@ inline glm::mat4 random_affine(std::mt19937& rng, glm::vec3 centre, float size) 
 
 // n randomly rotated, non-uniformly scaled spheres (or mixed shapes) inside a 20³ box around the
 // origin, camera at z = 30 looking at the box.
-inline FlatScene random_scene(int n, bool mixed, std::uint32_t seed = 1) {
+inline SceneData random_scene(int n, bool mixed, std::uint32_t seed = 1) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> pos(-10.0f, 10.0f);
-    FlatScene flat;
+    SceneData flat;
     Material m;
     m.diffuse = glm::vec3(0.7f);
     flat.materials.push_back(m);
@@ -54,9 +54,9 @@ inline FlatScene random_scene(int n, bool mixed, std::uint32_t seed = 1) {
 
 // side² mixed shapes on a grid on the ground (y = 0), each randomly rotated and scaled in its
 // cell, seen from above at an angle: the layout of the generator's big scenes.
-inline FlatScene grid_scene(int side, std::uint32_t seed = 1) {
+inline SceneData grid_scene(int side, std::uint32_t seed = 1) {
     std::mt19937 rng(seed);
-    FlatScene flat;
+    SceneData flat;
     Material m;
     flat.materials.push_back(m);
     flat.instances.reserve(std::size_t(side) * side);

@@ -380,19 +380,19 @@ std::vector<std::uint32_t> block_order(int width, int height, int bw, int bh, in
     return order;
 }
 
-std::unique_ptr<Fixture> make_fixture(FlatScene flat, int width, int height, bool with_point) {
+std::unique_ptr<Fixture> make_fixture(SceneData flat, int width, int height, bool with_point) {
     auto f = std::make_unique<Fixture>();
     auto start = std::chrono::steady_clock::now();
     f->scene = accelerate(std::move(flat));
     f->whitted_build_ms = ms_since(start);
-    f->primary = camera_rays(f->scene.flat.camera, width, height);
+    f->primary = camera_rays(f->scene.data.camera, width, height);
     f->block[0] = block_order(width, height, 2, 2);
     f->block[1] = block_order(width, height, 4, 2);
     f->block[2] = block_order(width, height, 4, 4);
-    const glm::vec3 light = f->scene.flat.lights[0].position;
+    const glm::vec3 light = f->scene.data.lights[0].position;
     for (const Ray& r : f->primary) {  // exactly as whitted_bench makes its shadow rays
         Hit hit;
-        if (!intersect_nearest(f->scene.bvh, f->scene.flat.instances, r, 0.0f, INFINITY, hit)) continue;
+        if (!intersect_nearest(f->scene.bvh, f->scene.data.instances, r, 0.0f, INFINITY, hit)) continue;
         glm::vec3 p = r.at(hit.t);
         glm::vec3 to_light = light - p;
         float d = glm::length(to_light);
@@ -401,9 +401,9 @@ std::unique_ptr<Fixture> make_fixture(FlatScene flat, int width, int height, boo
         f->shadow_reach.push_back(d - 1e-3f);
         f->shadow_from.push_back(hit.instance);
     }
-    if (with_point) f->point = build_embree(f->scene.flat.instances, Proto::Point);
-    f->user = build_embree(f->scene.flat.instances, Proto::User);
-    f->flat = build_embree(f->scene.flat.instances, Proto::Flat);
+    if (with_point) f->point = build_embree(f->scene.data.instances, Proto::Point);
+    f->user = build_embree(f->scene.data.instances, Proto::User);
+    f->data = build_embree(f->scene.data.instances, Proto::Flat);
     return f;
 }
 
@@ -445,7 +445,7 @@ std::uint64_t trace_whitted(const Scene& s, const Ray* rays, std::size_t b, std:
     std::uint64_t n = 0;
     for (std::size_t i = b; i < e; ++i) {
         Hit hit;
-        const bool h = intersect_nearest(s.bvh, s.flat.instances, rays[i], 0.0f, INFINITY, hit);
+        const bool h = intersect_nearest(s.bvh, s.data.instances, rays[i], 0.0f, INFINITY, hit);
         n += h;
         if (out) out[i] = h ? Result{hit.t, hit.instance} : Result{-1.0f, ~0u};
     }
@@ -501,7 +501,7 @@ std::uint64_t trace_whitted_packet(const Scene& s, const Ray* rays, const std::u
             Ray packet[N];
             Hit hits[N];
             for (int k = 0; k < N; ++k) packet[k] = rays[order[p + k]];
-            const unsigned mask = intersect_nearest_packet(bvh, s.flat.instances, packet, all, 0.0f, INFINITY, hits);
+            const unsigned mask = intersect_nearest_packet(bvh, s.data.instances, packet, all, 0.0f, INFINITY, hits);
             n += unsigned(std::popcount(mask));
             if (out)
                 for (int k = 0; k < N; ++k)
@@ -614,7 +614,7 @@ std::uint64_t trace_primary(Fixture& f, Engine engine, RTCScene es, std::size_t 
 }
 
 EmbreeScene& embree_of(Fixture& f, Proto proto) {
-    return proto == Proto::Point ? *f.point : proto == Proto::User ? *f.user : *f.flat;
+    return proto == Proto::Point ? *f.point : proto == Proto::User ? *f.user : *f.data;
 }
 RTCScene embree_scene(Fixture& f, Proto proto) { return embree_of(f, proto).top; }
 
@@ -676,7 +676,7 @@ void bm_check(benchmark::State& state, Fixture& (*fixture)(), Engine engine, Pro
     }
     // The world-space chord (t_out - t_in) of `instance` along `ray`: tiny for a grazing ray.
     auto chord = [&f](const Ray& ray, std::uint32_t instance) {
-        const Instance& inst = f.scene.flat.instances[instance];
+        const Instance& inst = f.scene.data.instances[instance];
         const Ray o = to_object_space(inst, ray);
         const auto sp = shape_math::intersect<float>(inst.kind, o.origin, o.direction);
         return sp.count ? double(sp.t[1] - sp.t[0]) : 0.0;
@@ -717,7 +717,7 @@ void bm_check(benchmark::State& state, Fixture& (*fixture)(), Engine engine, Pro
         // surface: if it leaves almost tangentially, whether it clips its own instance is decided
         // by rounding. A blocker other than that instance would be a real disagreement.
         Hit hw;
-        const bool bw = intersect_nearest(f.scene.bvh, f.scene.flat.instances, f.shadow[i], 0.0f, f.shadow_reach[i], hw);
+        const bool bw = intersect_nearest(f.scene.bvh, f.scene.data.instances, f.shadow[i], 0.0f, f.shadow_reach[i], hw);
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         RTCRayHit rh;

@@ -12,7 +12,7 @@
 // (one ray at a time: whitted Scene::intersect, Embree rtcIntersect1) and a shadow ray from every
 // hit toward a point light (Scene::occluded, rtcOccluded1), rays per second of wall time over
 // several passes on the given threads, and memory: the structures' own bytes where the engine says
-// (whitted: TriangleMesh::memory_bytes + the top level) and the process's peak RSS above what it
+// (whitted: TriangleMesh::memory_bytes and MeshBvh::memory_bytes + the top level) and the process's peak RSS above what it
 // was after generating the triangles (both engines copy the triangles into their own buffers).
 // Never part of CI; see bench/RESULTS.md.
 #include <sys/resource.h>
@@ -36,7 +36,7 @@
 
 #include "accel/scene.h"
 #include "flatten/flatten.h"
-#include "mesh/mesh_bvh.h"
+#include "accel/mesh_bvh.h"
 #include "mesh/uv_sphere.h"
 
 namespace {
@@ -160,8 +160,8 @@ struct ShadowRay {
 };
 
 // whitted's scene of the setup's triangles (moved out of it): the mesh and its placements.
-FlatScene whitted_scene(Setup& s) {
-    FlatScene flat;
+SceneData whitted_scene(Setup& s) {
+    SceneData flat;
     flat.materials.push_back(Material{});
     flat.meshes.push_back(std::move(s.mesh));
     for (const glm::mat4& m : s.placements) {
@@ -186,13 +186,13 @@ std::vector<ShadowRay> shadow_rays(const Setup& s, const std::vector<Ray>& rays,
 Result run_whitted(Setup& s, const std::vector<Ray>& rays, int threads) {
     Result res;
     const double rss0 = rss_mb(), peak0 = peak_rss_mb();
-    FlatScene flat = whitted_scene(s);
+    SceneData flat = whitted_scene(s);
     const auto t0 = Clock::now();
     const Scene scene = accelerate(std::move(flat), threads);
     res.build_s = seconds_since(t0);
     res.rss_delta_mb = rss_mb() - rss0;
     res.peak_delta_mb = peak_rss_mb() - peak0;
-    res.structure_mb = double(scene.flat.meshes[0].memory_bytes() + scene.flat.instances.capacity() * sizeof(Instance) +
+    res.structure_mb = double(scene.data.meshes[0].memory_bytes() + scene.mesh_bvhs[0].memory_bytes() + scene.data.instances.capacity() * sizeof(Instance) +
                               scene.bvh.nodes.capacity() * sizeof(Bvh4Node) +
                               scene.bvh.wide.nodes.capacity() * sizeof(Bvh8Node)) / 1e6;
     std::vector<Hit> hits(rays.size());
@@ -326,7 +326,7 @@ void run_both(Setup& s, const std::vector<Ray>& rays, int rounds) {
     RTCDevice device = rtcNewDevice(std::getenv("EMBREE_CONFIG") ? std::getenv("EMBREE_CONFIG") : "threads=1");
     RTCScene mesh_scene = nullptr;
     RTCScene top = embree_scene(device, s, mesh_scene);
-    FlatScene flat = whitted_scene(s);
+    SceneData flat = whitted_scene(s);
     const Scene scene = accelerate(std::move(flat), 1);
 
     std::vector<Hit> hits(rays.size());

@@ -51,15 +51,15 @@ struct Fixture {
     std::vector<float> shadow_reach;
 };
 
-std::unique_ptr<Fixture> make_fixture(FlatScene flat, int width, int height) {
+std::unique_ptr<Fixture> make_fixture(SceneData flat, int width, int height) {
     auto f = std::make_unique<Fixture>();
     f->scene = accelerate(std::move(flat));
-    f->primary = camera_rays(f->scene.flat.camera, width, height);
-    f->packets = camera_packets(f->scene.flat.camera, width, height);
-    const glm::vec3 light = f->scene.flat.lights[0].position;
+    f->primary = camera_rays(f->scene.data.camera, width, height);
+    f->packets = camera_packets(f->scene.data.camera, width, height);
+    const glm::vec3 light = f->scene.data.lights[0].position;
     for (const Ray& r : f->primary) {
         Hit hit;
-        if (!intersect_nearest(f->scene.bvh, f->scene.flat.instances, r, 0.0f, INFINITY, hit)) continue;
+        if (!intersect_nearest(f->scene.bvh, f->scene.data.instances, r, 0.0f, INFINITY, hit)) continue;
         glm::vec3 p = r.at(hit.t);
         glm::vec3 to_light = light - p;
         float d = glm::length(to_light);
@@ -85,7 +85,7 @@ void primary(benchmark::State& state, Fixture& f) {
     alignas(64) std::atomic<std::uint64_t> hits{0};
     for (auto _ : state) {
         const Bvh* bvh = &f.scene.bvh;
-        const std::vector<Instance>* instances = &f.scene.flat.instances;
+        const std::vector<Instance>* instances = &f.scene.data.instances;
         const Ray* rays = f.primary.data();
         std::atomic<std::uint64_t>* total = &hits;
         parallel_for(f.primary.size(), threads, [=](std::size_t b, std::size_t e) {
@@ -107,7 +107,7 @@ void primary_packets(benchmark::State& state, Fixture& f) {
     alignas(64) std::atomic<std::uint64_t> hits{0};
     for (auto _ : state) {
         const Bvh* bvh = &f.scene.bvh;
-        const std::vector<Instance>* instances = &f.scene.flat.instances;
+        const std::vector<Instance>* instances = &f.scene.data.instances;
         const CameraPacket* packets = f.packets.data();
         std::atomic<std::uint64_t>* total = &hits;
         parallel_for(f.packets.size(), threads, [=](std::size_t b, std::size_t e) {
@@ -171,7 +171,7 @@ void BM_BvhBuild(benchmark::State& state) {
 // The whole integrator (shadows, reflections) on a 1920×1080 image: thread scaling of render().
 void BM_Render1080p(benchmark::State& state) {
     static Scene scene = [] {
-        FlatScene flat = random_scene(1000, true, 7);
+        SceneData flat = random_scene(1000, true, 7);
         flat.materials[0].reflect = glm::vec3(0.3f);
         flat.materials[0].specular = glm::vec3(0.5f);
         flat.materials[0].shine = 30;

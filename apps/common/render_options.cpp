@@ -9,7 +9,7 @@
 #include "film/image_io.h"
 #include "integrator/render_mode.h"
 #include "run_limits.h"
-#include "parse/read_file.h"
+#include "base/read_file.h"
 
 namespace whitted::cli {
 namespace {

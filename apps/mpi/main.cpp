@@ -15,7 +15,7 @@
 #include "ranks.h"
 #include "render_options.h"
 #include "scene_share.h"
-#include "util/parallel_for.h"
+#include "base/parallel_for.h"
 
 namespace {
 
@@ -91,7 +91,7 @@ int run(int argc, char** argv, int rank, int ranks) {
     if (shared.code != 0) return shared.code;
 
     RankSetup s;
-    const auto integrator = make_integrator(*shared.loaded.scene, shared.loaded.scene->flat.camera,
+    const auto integrator = make_integrator(*shared.loaded.scene, shared.loaded.scene->data.camera,
                                             render_job(o, nullptr).integrator);
     s.integrator = integrator.get();
     s.job = render_job(o, nullptr);

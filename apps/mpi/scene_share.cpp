@@ -12,7 +12,7 @@
 
 #include "film/image_io.h"
 #include "load_report.h"
-#include "parse/read_file.h"
+#include "base/read_file.h"
 #include "tiles.h"
 
 namespace whitted::mpi {

@@ -4,7 +4,7 @@
 // pixels of the image, or wheel steps) to a new camera. The camera is a CameraDesc (eye, focus, up,
 // angle: what the file says), so that the camera on screen can be written back into the file as
 // text and give the very same image (make_camera of the same numbers).
-#include "scene/scene_description.h"
+#include "description/scene_description.h"
 
 namespace whitted::viewer {
 

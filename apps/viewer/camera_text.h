@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-#include "scene/scene_description.h"
+#include "description/scene_description.h"
 
 namespace whitted::viewer {
 

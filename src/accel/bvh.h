@@ -8,12 +8,14 @@
 #include <vector>
 
 #include "accel/bvh_node.h"
-#include "flatten/flat_scene.h"
-#include "shapes/bounds.h"
-#include "shapes/ray.h"
+#include "data/scene_data.h"
+#include "base/bounds.h"
+#include "base/ray.h"
 #include "shapes/unit_shapes.h"
 
 namespace whitted {
+
+struct MeshBvh;  // accel/mesh_bvh.h
 
 // Builds the hierarchy and reorders `instances` to match it, on `threads` threads (0 = all
 // hardware threads; the tree is the same for any count). Throws std::length_error beyond
@@ -42,9 +44,9 @@ struct Hit {
 };
 
 // Nearest hit with t in (t_min, t_max); of hits at the same t, the lowest instance index (and in
-// a mesh, the lowest triangle). Mesh instances need `meshes` (their FlatScene::meshes).
+// a mesh, the lowest triangle). Mesh instances need `meshes`, the BVHs of the scene's meshes.
 bool intersect_nearest(const Bvh& bvh, const std::vector<Instance>& instances, const Ray& ray, float t_min, float t_max,
-                       Hit& hit, const std::vector<TriangleMesh>* meshes = nullptr);
+                       Hit& hit, const std::vector<MeshBvh>* meshes = nullptr);
 
 // The nearest-hit query done by testing every instance (and every triangle of a mesh): the
 // reference the BVH is tested against.

@@ -27,7 +27,7 @@ WHITTED_BVH_INLINE bool visit_unit_instance(const Instance& inst, std::uint32_t 
 
 // The same for any instance: a mesh instance offers each triangle it crosses.
 template <class Visit>
-WHITTED_BVH_INLINE bool visit_instance(const Instance& inst, std::uint32_t i, const std::vector<TriangleMesh>* meshes,
+WHITTED_BVH_INLINE bool visit_instance(const Instance& inst, std::uint32_t i, const std::vector<MeshBvh>* meshes,
                                        const Ray& ray, float t_min, float t_max, Visit& visit) {
     if (inst.kind == ShapeKind::Mesh)
         return mesh_for_each_crossing((*meshes)[inst.mesh], to_object_space(inst, ray), t_min, t_max,
@@ -39,7 +39,7 @@ WHITTED_BVH_INLINE bool visit_instance(const Instance& inst, std::uint32_t i, co
 // has mesh instances (else no instance's kind is tested against Mesh).
 template <bool kMeshes, class Tester, class Node, class Visit>
 WHITTED_BVH_INLINE bool walk_crossings_on(const BasicBvh<Node>& tree, const Instance* inst,
-                                          const std::vector<TriangleMesh>* meshes, const Ray& ray, float t_min,
+                                          const std::vector<MeshBvh>* meshes, const Ray& ray, float t_min,
                                           float t_max, Visit& visit) {
     const BoxRay box_ray(ray);
     return walk_any_with<false>(Tester(box_ray), tree, t_min, t_max,
@@ -66,7 +66,7 @@ bool walk_unit_crossings(const Bvh& bvh, const Instance* inst, const Ray& ray, f
 }
 
 template <class Tester, class Node, class Visit>
-bool walk_mesh_crossings(const BasicBvh<Node>& tree, const Instance* inst, const std::vector<TriangleMesh>* meshes,
+bool walk_mesh_crossings(const BasicBvh<Node>& tree, const Instance* inst, const std::vector<MeshBvh>* meshes,
                          const Ray& ray, float t_min, float t_max, Visit& visit) {
     return walk_crossings_on<true, Tester>(tree, inst, meshes, ray, t_min, t_max, visit);
 }
@@ -75,7 +75,7 @@ bool walk_mesh_crossings(const BasicBvh<Node>& tree, const Instance* inst, const
 // A scene with meshes on a CPU with AVX2: the 8-wide tree in AVX2 steps, the meshes' walks inlined.
 template <class Visit>
 [[gnu::target("avx2"), gnu::flatten]] bool walk_mesh_crossings_avx2(const Bvh8& tree, const Instance* inst,
-                                                                    const std::vector<TriangleMesh>* meshes,
+                                                                    const std::vector<MeshBvh>* meshes,
                                                                     const Ray& ray, float t_min, float t_max,
                                                                     Visit& visit) {
     return walk_crossings_on<true, BoxTesterAvx2>(tree, inst, meshes, ray, t_min, t_max, visit);
@@ -84,7 +84,7 @@ template <class Visit>
 
 // A scene with meshes: its 8-wide tree (the 4-wide one for a tree built without it).
 template <class Visit>
-bool walk_crossings_with_meshes(const Bvh& bvh, const Instance* inst, const std::vector<TriangleMesh>* meshes,
+bool walk_crossings_with_meshes(const Bvh& bvh, const Instance* inst, const std::vector<MeshBvh>* meshes,
                                 const Ray& ray, float t_min, float t_max, Visit& visit) {
     if (bvh.wide.nodes.empty())
         return walk_mesh_crossings<BoxTester>(static_cast<const BasicBvh<Bvh4Node>&>(bvh), inst, meshes, ray, t_min,
@@ -102,7 +102,7 @@ bool walk_crossings_with_meshes(const Bvh& bvh, const Instance* inst, const std:
 // offered once per triangle crossed, with 1. visit returns false to stop. Returns false if it was
 // stopped, true if every crossing was visited. Mesh instances need `meshes`.
 template <class Visit>
-bool for_each_crossing(const Bvh& bvh, const std::vector<Instance>& instances, const std::vector<TriangleMesh>* meshes,
+bool for_each_crossing(const Bvh& bvh, const std::vector<Instance>& instances, const std::vector<MeshBvh>* meshes,
                        const Ray& ray, float t_min, float t_max, Visit&& visit) {
     if (bvh_detail::has_meshes(meshes))
         return bvh_detail::walk_crossings_with_meshes(bvh, instances.data(), meshes, ray, t_min, t_max, visit);
@@ -118,7 +118,7 @@ bool for_each_crossing(const Bvh& bvh, const std::vector<Instance>& instances, c
 // The same, testing every instance (the reference for the tests).
 template <class Visit>
 bool for_each_crossing_brute_force(const std::vector<Instance>& instances, const Ray& ray, float t_min, float t_max,
-                                   Visit&& visit, const std::vector<TriangleMesh>* meshes = nullptr) {
+                                   Visit&& visit, const std::vector<MeshBvh>* meshes = nullptr) {
     for (std::uint32_t i = 0; i < instances.size(); ++i)
         if (!bvh_detail::visit_instance(instances[i], i, meshes, ray, t_min, t_max, visit)) return false;
     return true;

@@ -13,8 +13,8 @@
 
 #include "accel/bvh.h"
 #include "accel/instance_geometry.h"
-#include "util/big_vector.h"
-#include "util/parallel_for.h"
+#include "base/big_vector.h"
+#include "base/parallel_for.h"
 
 namespace whitted {
 namespace {

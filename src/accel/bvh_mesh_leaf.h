@@ -8,9 +8,13 @@
 #include <vector>
 
 #include "accel/bvh_ray.h"
-#include "mesh/mesh_bvh.h"
+#include "accel/mesh_bvh.h"
 
 namespace whitted::bvh_detail {
+
+// Whether a query may meet mesh instances: only then do the walks test each instance's kind (a
+// mesh instance's index points into a non-empty `meshes`). Queries pick their walk once with it.
+inline bool has_meshes(const std::vector<MeshBvh>* meshes) { return meshes != nullptr && !meshes->empty(); }
 
 // What a ray's nearest hit so far says about triangles (unit shapes leave it alone; the hit's
 // fields are cleared for them at the end).
@@ -21,7 +25,7 @@ struct TriangleState {
 
 // offer_nearest (bvh_ray.h) for mesh instance `index`: its nearest triangle with t in
 // (t_min, t_max), searched only up to the nearest hit so far (inclusive, for the tie rule).
-WHITTED_BVH_INLINE void offer_mesh_nearest(const TriangleMesh& mesh, const Instance& inst, const Ray& ray,
+WHITTED_BVH_INLINE void offer_mesh_nearest(const MeshBvh& mesh, const Instance& inst, const Ray& ray,
                                            std::uint32_t index, float t_min, float t_max, float& best,
                                            std::uint32_t& best_index, ShapePart& best_part, bool& found,
                                            TriangleState& tri) {

@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "util/big_vector.h"
+#include "base/big_vector.h"
 
-#include "shapes/bounds.h"
+#include "base/bounds.h"
 
 namespace whitted {
 

@@ -18,7 +18,8 @@
 #define WHITTED_BVH_SSE 1
 #endif
 
-#include "accel/bvh_packet_shapes.h"
+#include "shapes/unit_shape_math4.h"
+#include "accel/bvh_mesh_leaf.h"
 #include "accel/bvh_ray.h"
 
 namespace whitted {
@@ -28,7 +29,7 @@ namespace {
 // with meshes, whose top level is 8-wide: bvh_node.h).
 unsigned one_by_one(const Bvh& bvh, const std::vector<Instance>& instances, const Ray (&rays)[kPacketSize],
                            unsigned active, float t_min, float t_max, Hit (&hits)[kPacketSize],
-                           const std::vector<TriangleMesh>* meshes) {
+                           const std::vector<MeshBvh>* meshes) {
     unsigned result = 0;
     for (int l = 0; l < kPacketSize; ++l)
         if (((active >> l) & 1) && intersect_nearest(bvh, instances, rays[l], t_min, t_max, hits[l], meshes))
@@ -426,7 +427,7 @@ unsigned dispatch(const Bvh& bvh, const std::vector<Instance>& instances, const 
 
 unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& instances,
                                   const Ray (&rays)[kPacketSize], unsigned active, float t_min, float t_max,
-                                  Hit (&hits)[kPacketSize], const std::vector<TriangleMesh>* meshes) {
+                                  Hit (&hits)[kPacketSize], const std::vector<MeshBvh>* meshes) {
     active &= ~0u >> (32 - kPacketSize);
     if (bvh.empty() || active == 0) return 0;
     // A scene with meshes: its top level is 8-wide (bvh_node.h), walked one ray at a time.
@@ -440,7 +441,7 @@ unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& i
 // Without SSE: one ray at a time, which is exactly the single-ray query.
 unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& instances,
                                   const Ray (&rays)[kPacketSize], unsigned active, float t_min, float t_max,
-                                  Hit (&hits)[kPacketSize], const std::vector<TriangleMesh>* meshes) {
+                                  Hit (&hits)[kPacketSize], const std::vector<MeshBvh>* meshes) {
     return one_by_one(bvh, instances, rays, active, t_min, t_max, hits, meshes);
 }
 

@@ -11,10 +11,6 @@
 
 namespace whitted {
 
-// Rays per packet: 4×4 pixels of a camera tile. Measured on the 1,000-sphere benchmark: 8 rays
-// (4×2) 12% slower, 32 (8×4) no faster and slower on mixed shapes.
-constexpr int kPacketSize = 16;
-
 // For every lane l whose bit is set in `active`: exactly what
 // intersect_nearest(bvh, instances, rays[l], t_min, t_max, hits[l]) returns (the same t,
 // instance and part, ties to the lowest instance index); bit l of the result says whether it hit.
@@ -23,6 +19,6 @@ constexpr int kPacketSize = 16;
 // hits[l] is written only for lanes that hit. No allocation.
 unsigned intersect_nearest_packet(const Bvh& bvh, const std::vector<Instance>& instances,
                                   const Ray (&rays)[kPacketSize], unsigned active, float t_min, float t_max,
-                                  Hit (&hits)[kPacketSize], const std::vector<TriangleMesh>* meshes = nullptr);
+                                  Hit (&hits)[kPacketSize], const std::vector<MeshBvh>* meshes = nullptr);
 
 }  // namespace whitted

@@ -26,10 +26,6 @@ inline float safe_reciprocal(float d) { return 1.0f / (std::fabs(d) > 1e-30f ? d
 // otherwise call once per leaf.
 #define WHITTED_BVH_LAMBDA_INLINE __attribute__((always_inline))
 
-// Whether a query may meet mesh instances: only then do the walks test each instance's kind (a
-// mesh instance's index points into a non-empty `meshes`). Queries pick their walk once with it.
-inline bool has_meshes(const std::vector<TriangleMesh>* meshes) { return meshes != nullptr && !meshes->empty(); }
-
 // The object-space interval of instance `inst` along the world ray.
 WHITTED_BVH_INLINE shape_math::Span<float> intersect_instance(const Instance& inst, const Ray& ray) {
     const Ray o = to_object_space(inst, ray);

@@ -17,7 +17,7 @@ namespace {
 // nearest_unit_shapes below; the query decides once which walk to take).
 template <class Tester, class Node>
 WHITTED_BVH_INLINE bool nearest_with_meshes_on(const BasicBvh<Node>& tree, const Instance* inst,
-                                               const TriangleMesh* mesh, const Ray& ray, float t_min, float t_max,
+                                               const MeshBvh* mesh, const Ray& ray, float t_min, float t_max,
                                                Hit& hit) {
     bool found = false;
     float best = t_max;
@@ -44,13 +44,13 @@ WHITTED_BVH_INLINE bool nearest_with_meshes_on(const BasicBvh<Node>& tree, const
 
 #ifdef WHITTED_BVH_AVX2
 [[gnu::target("avx2"), gnu::flatten]] bool nearest_with_meshes_avx2(const Bvh8& tree, const Instance* inst,
-                                                                    const TriangleMesh* mesh, const Ray& ray,
+                                                                    const MeshBvh* mesh, const Ray& ray,
                                                                     float t_min, float t_max, Hit& hit) {
     return nearest_with_meshes_on<bvh_detail::BoxTesterAvx2>(tree, inst, mesh, ray, t_min, t_max, hit);
 }
 #endif
 
-bool nearest_with_meshes(const Bvh& bvh, const Instance* inst, const TriangleMesh* mesh, const Ray& ray, float t_min,
+bool nearest_with_meshes(const Bvh& bvh, const Instance* inst, const MeshBvh* mesh, const Ray& ray, float t_min,
                          float t_max, Hit& hit) {
     if (bvh.wide.nodes.empty())  // a tree built without its 8-wide copy
         return nearest_with_meshes_on<bvh_detail::BoxTester>(static_cast<const BasicBvh<Bvh4Node>&>(bvh), inst, mesh,
@@ -145,7 +145,7 @@ bool nearest_unit_shapes(const Bvh& bvh, const Instance* inst, const Ray& ray, f
 }  // namespace
 
 bool intersect_nearest(const Bvh& bvh, const std::vector<Instance>& instances, const Ray& ray, float t_min, float t_max,
-                       Hit& hit, const std::vector<TriangleMesh>* meshes) {
+                       Hit& hit, const std::vector<MeshBvh>* meshes) {
     if (bvh_detail::has_meshes(meshes))
         return nearest_with_meshes(bvh, instances.data(), meshes->data(), ray, t_min, t_max, hit);
     return nearest_unit_shapes(bvh, instances.data(), ray, t_min, t_max, hit);

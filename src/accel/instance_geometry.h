@@ -2,7 +2,7 @@
 // Geometry of one placed instance: the object-space ray, its world bounds, its world normal.
 #include <glm/glm.hpp>
 
-#include "flatten/flat_scene.h"
+#include "data/scene_data.h"
 #include "shapes/unit_shapes.h"
 
 namespace whitted {

@@ -1,18 +1,16 @@
 #include "accel/scene.h"
 
-#include "mesh/mesh_bvh.h"
-
 namespace whitted {
 
-Scene accelerate(FlatScene flat, int threads) {
+Scene accelerate(SceneData data, int threads) {
     Scene scene;
-    scene.flat = std::move(flat);
+    scene.data = std::move(data);
     // The bottom level first: a mesh instance's world bounds come from its mesh's box.
-    for (TriangleMesh& mesh : scene.flat.meshes)
-        if (mesh.bvh.nodes.empty()) build_mesh_bvh(mesh, threads);
+    scene.mesh_bvhs.reserve(scene.data.meshes.size());
+    for (TriangleMesh& mesh : scene.data.meshes) scene.mesh_bvhs.push_back(build_mesh_bvh(mesh, threads));
     std::vector<std::uint32_t> order;
-    scene.bvh = build_bvh(scene.flat.instances, threads, &scene.flat.meshes, &order);
-    scene.flat.provenance.reorder_instances(order);
+    scene.bvh = build_bvh(scene.data.instances, threads, &scene.data.meshes, &order);
+    scene.data.provenance.reorder_instances(order);
     return scene;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// The renderable scene: the flattened arrays and the acceleration structure behind one narrow
+// The renderable scene: the render-ready data and the acceleration structure behind one narrow
 // interface of ray queries (as Embree's rtcIntersect / rtcOccluded, pbrt's Intersect /
 // IntersectP). Integrators ask it; they never pair the BVH with the instance array themselves.
 #include <limits>
@@ -7,29 +7,31 @@
 #include "accel/bvh.h"
 #include "accel/bvh_any_hit.h"
 #include "accel/bvh_packet.h"
-#include "flatten/flat_scene.h"
+#include "accel/mesh_bvh.h"
+#include "data/scene_data.h"
 
 namespace whitted {
 
 struct Scene {
-    FlatScene flat;
-    Bvh bvh;
+    SceneData data;
+    Bvh bvh;                         // over data.instances
+    std::vector<MeshBvh> mesh_bvhs;  // one per data.meshes
 
     static constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
     // The nearest hit along the ray with t in (0, t_max); of equal distances, the lowest instance.
     bool intersect(const Ray& ray, Hit& hit, float t_max = kInfinity) const {
-        return intersect_nearest(bvh, flat.instances, ray, 0.0f, t_max, hit, &flat.meshes);
+        return intersect_nearest(bvh, data.instances, ray, 0.0f, t_max, hit, &mesh_bvhs);
     }
     // The same for the lanes of a packet set in `active`, exactly as one by one; bit l of the
     // result says whether lane l hit (hits[l] is written only then).
     unsigned intersect(const Ray (&rays)[kPacketSize], unsigned active, Hit (&hits)[kPacketSize],
                        float t_max = kInfinity) const {
-        return intersect_nearest_packet(bvh, flat.instances, rays, active, 0.0f, t_max, hits, &flat.meshes);
+        return intersect_nearest_packet(bvh, data.instances, rays, active, 0.0f, t_max, hits, &mesh_bvhs);
     }
     // Whether anything lies along the ray with t in (0, t_max).
     bool occluded(const Ray& ray, float t_max) const {
-        return !for_each_crossing(bvh, flat.instances, &flat.meshes, ray, 0.0f, t_max,
+        return !for_each_crossing(bvh, data.instances, &mesh_bvhs, ray, 0.0f, t_max,
                                   [](std::uint32_t, int) { return false; });
     }
     // The same for the lanes of a packet set in `active`: bit l of the result says lane l is blocked.
@@ -42,15 +44,15 @@ struct Scene {
     // false if it stopped.
     template <class Visit>
     bool visit_crossings(const Ray& ray, float t_max, Visit&& visit) const {
-        return for_each_crossing(bvh, flat.instances, &flat.meshes, ray, 0.0f, t_max, visit);
+        return for_each_crossing(bvh, data.instances, &mesh_bvhs, ray, 0.0f, t_max, visit);
     }
 
-    const Material& material(std::uint32_t instance) const { return flat.materials[flat.instances[instance].material]; }
+    const Material& material(std::uint32_t instance) const { return data.materials[data.instances[instance].material]; }
     const Material& material(const Hit& hit) const { return material(hit.instance); }
 };
 
-// Builds the BVH (reordering flat.instances to match it) on `threads` threads (0 = all), after
-// the BVH of every mesh that has none yet (reordering its triangles).
-Scene accelerate(FlatScene flat, int threads = 0);
+// Builds the BVH of every mesh (reordering its triangles), then the BVH over the instances
+// (reordering data.instances to match it), on `threads` threads (0 = all).
+Scene accelerate(SceneData data, int threads = 0);
 
 }  // namespace whitted

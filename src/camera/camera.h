@@ -5,7 +5,7 @@
 // position meets the plane in focus.
 #include <glm/glm.hpp>
 
-#include "shapes/ray.h"
+#include "base/ray.h"
 
 namespace whitted {
 

@@ -7,8 +7,8 @@
 #include <utility>
 #include <unordered_map>
 
-#include "parse/read_file.h"
-#include "parse/transforms.h"
+#include "base/read_file.h"
+#include "base/transforms.h"
 
 namespace whitted {
 namespace {
@@ -153,7 +153,7 @@ Camera make_camera(const CameraDesc& desc) {
 
 FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits) {
     FlattenResult result;
-    FlatScene& scene = result.scene;
+    SceneData& scene = result.scene;
     scene.background = desc.background;
     scene.ambient_intensity = desc.ambient_intensity;
     scene.camera = make_camera(desc.camera);

@@ -1,17 +1,17 @@
 #pragma once
-// SceneDescription (a graph of mastersubgraphs) → FlatScene (one Instance per drawn object).
+// SceneDescription (a graph of mastersubgraphs) → SceneData (one Instance per drawn object).
 #include <atomic>
 #include <cstddef>
 #include <vector>
 
-#include "flatten/flat_scene.h"
-#include "parse/diagnostic.h"
-#include "scene/scene_description.h"
+#include "data/scene_data.h"
+#include "base/diagnostic.h"
+#include "description/scene_description.h"
 
 namespace whitted {
 
 struct FlattenResult {
-    FlatScene scene;
+    SceneData scene;
     // One entry per material in scene.materials: the object block it came from, so that
     // later stages (textures) can point at the scene file.
     std::vector<const ObjectDesc*> material_sources;

@@ -118,11 +118,11 @@ void add_scaled(ColourParts& to, const ColourParts& p, float s) {
 ObjectInfo describe_object(const Scene& scene, std::uint32_t instance) {
     ObjectInfo o;
     o.instance = instance;
-    const Instance& inst = scene.flat.instances[instance];
+    const Instance& inst = scene.data.instances[instance];
     o.kind = inst.kind;
     o.material = inst.material;
-    o.loc = scene.flat.provenance.material_object(inst.material);
-    o.chain = scene.flat.provenance.chain(instance);
+    o.loc = scene.data.provenance.material_object(inst.material);
+    o.chain = scene.data.provenance.chain(instance);
     return o;
 }
 
@@ -135,7 +135,7 @@ PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y
     r.mode = job.integrator.mode;
     r.max_depth = job.integrator.max_depth;
     r.sampling = job.sampling;
-    r.background = scene.flat.background;
+    r.background = scene.data.background;
 
     const Camera camera = job.camera_for(scene);
     const auto integrator = make_integrator(scene, camera, job.integrator);
@@ -192,14 +192,14 @@ PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y
     r.hit = describe_hit(scene, node);
     r.material = *node.surface.material;
     r.material_loc = r.hit->object.loc;
-    r.texture_file = scene.flat.provenance.material_texture(r.hit->object.material);
+    r.texture_file = scene.data.provenance.material_texture(r.hit->object.material);
     r.diffuse_at_hit = node.surface.diffuse;
     r.ambient_at_hit = node.surface.ambient;
     for (const LightTerm& t : node.lights) {
         LightInfo li;
         li.term = t;
-        li.type = scene.flat.lights[t.light].type;
-        li.loc = scene.flat.provenance.light(t.light);
+        li.type = scene.data.lights[t.light].type;
+        li.loc = scene.data.provenance.light(t.light);
         const float m = std::max(t.shadow.x, std::max(t.shadow.y, t.shadow.z));
         const float lo = std::min(t.shadow.x, std::min(t.shadow.y, t.shadow.z));
         if (t.faces && (m <= 0.0f || lo < 1.0f)) li.blockers = blockers_toward(scene, node, t);

@@ -17,7 +17,7 @@
 #include <glm/glm.hpp>
 
 #include "accel/scene.h"
-#include "flatten/provenance.h"
+#include "data/provenance.h"
 #include "integrator/shading_record.h"
 #include "render/render_job.h"
 

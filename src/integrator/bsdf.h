@@ -8,7 +8,7 @@
 // the refraction lobe to the mirror direction. A lobe is sampled in proportion to its weight.
 #include <glm/glm.hpp>
 
-#include "flatten/flat_scene.h"
+#include "data/scene_data.h"
 
 namespace whitted {
 

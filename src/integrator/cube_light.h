@@ -8,7 +8,7 @@
 // ask for it at the same point, so multiple importance sampling stays consistent.
 #include <glm/glm.hpp>
 
-#include "flatten/flat_scene.h"
+#include "data/scene_data.h"
 
 namespace whitted {
 

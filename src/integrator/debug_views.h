@@ -25,7 +25,7 @@ public:
 
 private:
     glm::vec3 hit_color(const Ray& ray, const Hit& hit) const override;
-    glm::vec3 miss_color() const override { return scene_.flat.background; }
+    glm::vec3 miss_color() const override { return scene_.data.background; }
 };
 
 class NormalsIntegrator final : public HitViewIntegrator {

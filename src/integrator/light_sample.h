@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include "flatten/flat_scene.h"
+#include "data/scene_data.h"
 
 namespace whitted {
 

@@ -60,7 +60,7 @@ glm::vec3 PathIntegrator::next_event(const Vertex& v, int bounce, const SampleKe
     if (pick.instance >= 0) {
         const std::uint32_t light = std::uint32_t(pick.instance);
         // An emissive mesh draws its triangle from a dimension of its own (the unit shapes need two).
-        const float u_triangle = scene_.flat.instances[light].kind == ShapeKind::Mesh
+        const float u_triangle = scene_.data.instances[light].kind == ShapeKind::Mesh
                                      ? sampler.get2d(key, dimension::path(bounce, dimension::kPathLightTriangle)).x
                                      : 0.0f;
         const AreaLightSample ls = lights_.sample_area(light, x, u, u_triangle);
@@ -83,7 +83,7 @@ glm::vec3 PathIntegrator::next_event(const Vertex& v, int bounce, const SampleKe
 
     // A point, spot or directional light: its §6/§9.1 intensity, as the Whitted diffuse term
     // counts it (π · f · C · att · spot · cos θ), reached by this estimate alone.
-    const Light& light = scene_.flat.lights[std::size_t(pick.light)];
+    const Light& light = scene_.data.lights[std::size_t(pick.light)];
     const LightSample ls = sampler.centred() || !has_extent(light) ? sample_light(light, x) : sample_light(light, x, u);
     const float cos_x = std::abs(glm::dot(v.bsdf.normal(), ls.to_light));
     if (max_component(ls.intensity) <= 0.0f || !(cos_x > 0.0f)) return glm::vec3(0.0f);
@@ -110,7 +110,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
         const bool found = bounce == 0 && first_known ? first != nullptr : scene_.intersect(ray, hit);
         if (bounce == 0 && first_known && first) hit = *first;
         if (!found) {
-            radiance += beta * scene_.flat.background;  // the uniform environment
+            radiance += beta * scene_.data.background;  // the uniform environment
             break;
         }
         const Surface s = surface_at(scene_, ray, hit);
@@ -125,7 +125,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
                 const float d2 = glm::dot(to, to);
                 // The light's density is per unit area of its true surface: the geometric normal
                 // (a mesh's shading normal, interpolated, is not that surface's).
-                const glm::vec3 n_light = normal_to_world(scene_.flat.instances[hit.instance], s.object_normal);
+                const glm::vec3 n_light = normal_to_world(scene_.data.instances[hit.instance], s.object_normal);
                 const float cos_light = std::abs(glm::dot(n_light, wo));
                 const float pdf_light = lights_.choice_probability(hit.instance) *
                                         lights_.pdf_area(hit.instance, from, s.object_normal) * d2 / std::max(cos_light, 1e-12f);
@@ -161,7 +161,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
     return radiance;
 }
 
-std::vector<Diagnostic> path_mode_warnings(const FlatScene& scene, const std::vector<SourceLoc>& sources) {
+std::vector<Diagnostic> path_mode_warnings(const SceneData& scene, const std::vector<SourceLoc>& sources) {
     std::vector<Diagnostic> out;
     for (std::size_t i = 0; i < scene.materials.size() && i < sources.size(); ++i) {
         const float s = energy_scale(scene.materials[i]);

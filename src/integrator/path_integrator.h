@@ -8,7 +8,7 @@
 
 #include "integrator/integrator.h"
 #include "integrator/path_lights.h"
-#include "parse/diagnostic.h"
+#include "base/diagnostic.h"
 
 namespace whitted {
 
@@ -36,6 +36,6 @@ private:
 
 // Warnings that hold only in path mode: materials whose weights sum above 1 in some channel and are
 // scaled down (§9.2). `sources[i]` is material i's object block.
-std::vector<Diagnostic> path_mode_warnings(const FlatScene& scene, const std::vector<SourceLoc>& sources);
+std::vector<Diagnostic> path_mode_warnings(const SceneData& scene, const std::vector<SourceLoc>& sources);
 
 }  // namespace whitted

@@ -41,7 +41,7 @@ float PathLights::world_area(const Instance& inst) {
 }
 
 PathLights::PathLights(const Scene& scene) : scene_(scene) {
-    const FlatScene& flat = scene.flat;
+    const SceneData& flat = scene.data;
     std::vector<float> power;
     mesh_sampler_of_.assign(flat.instances.size(), -1);
     cube_of_.assign(flat.instances.size(), -1);
@@ -105,7 +105,7 @@ AreaLightSample PathLights::sample_area(std::uint32_t instance, const glm::vec3&
         const CubeLight::Sample s = cubes_[std::size_t(c)].sample(x, u);
         return {s.point, s.normal, s.pdf_area};
     }
-    const Instance& inst = scene_.flat.instances[instance];
+    const Instance& inst = scene_.data.instances[instance];
     const ShapeSample s = sample_unit_shape(inst.kind, u);
     const glm::vec3 n_object = unit_shape_normal(inst.kind, s.part, s.p);
     const glm::mat4 m = object_to_world(inst);
@@ -117,7 +117,7 @@ float PathLights::pdf_area(std::uint32_t instance, const glm::vec3& x, const glm
         return 1.0f / mesh_samplers_[std::size_t(m)].total_area();
     if (const std::int32_t c = cube_of_[instance]; c >= 0)
         return cubes_[std::size_t(c)].pdf_area(x, CubeLight::face_of(n_object));
-    const Instance& inst = scene_.flat.instances[instance];
+    const Instance& inst = scene_.data.instances[instance];
     return 1.0f / (unit_shape_area(inst.kind) * area_scale(inst, unit_shape_area_normal(inst.kind, n_object)));
 }
 

@@ -13,7 +13,7 @@
 
 #include "accel/scene.h"
 #include "integrator/cube_light.h"
-#include "mesh/mesh_area_sampler.h"
+#include "integrator/mesh_area_sampler.h"
 
 namespace whitted {
 

@@ -12,7 +12,7 @@
 #include "accel/bvh.h"
 #include "integrator/light_sample.h"
 #include "integrator/surface.h"
-#include "shapes/ray.h"
+#include "base/ray.h"
 
 namespace whitted {
 

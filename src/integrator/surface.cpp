@@ -6,13 +6,13 @@
 namespace whitted {
 
 Surface surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
-    const Instance& inst = scene.flat.instances[hit.instance];
+    const Instance& inst = scene.data.instances[hit.instance];
     const Ray object_ray = to_object_space(inst, ray);
     const glm::vec3 p = object_ray.at(hit.t);
     Surface s;
     s.point = ray.at(hit.t);
     if (inst.kind == ShapeKind::Mesh) {
-        const TriangleMesh& mesh = scene.flat.meshes[inst.mesh];
+        const TriangleMesh& mesh = scene.data.meshes[inst.mesh];
         s.object_normal = glm::normalize(triangle_geometric_normal(mesh, hit.triangle));
         s.normal = normal_to_world(inst, mesh_shading_normal(mesh, hit.triangle, hit.u, hit.v));
         s.uv = mesh_uv(mesh, hit.triangle, hit.u, hit.v);
@@ -21,11 +21,11 @@ Surface surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
         s.normal = normal_to_world(inst, s.object_normal);
         s.uv = unit_shape_uv(inst.kind, hit.part, p);
     }
-    s.material = &scene.flat.materials[inst.material];
+    s.material = &scene.data.materials[inst.material];
     s.diffuse = s.material->diffuse;
     s.ambient = s.material->ambient;
     if (s.material->texture >= 0) {
-        glm::vec3 texel = sample_texture(scene.flat.textures[s.material->texture], s.uv, s.material->repeat_u,
+        glm::vec3 texel = sample_texture(scene.data.textures[s.material->texture], s.uv, s.material->repeat_u,
                                          s.material->repeat_v);
         if (s.material->blend >= 0) {  // Brown/Tufts `blend` (spec §9.4): a mix, the ambient left as is
             s.diffuse = (1.0f - s.material->blend) * s.diffuse + s.material->blend * texel;

@@ -80,7 +80,7 @@ glm::vec3 WhittedIntegrator::through_glass(const LightSample& ls, const glm::vec
 
 void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sampler, glm::vec3 (&out)[kPacketSize],
                                  RayCounts& counts) const {
-    const FlatScene& flat = scene_.flat;
+    const SceneData& flat = scene_.data;
     const unsigned active = batch.active;
     Hit hits[kPacketSize];
     const unsigned found = scene_.intersect(batch.rays, active, hits) & active;
@@ -131,8 +131,8 @@ glm::vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const glm::vec3& w
                                    RayCounts& counts, Recorder& rec) const {
     Hit hit;
     if (!scene_.intersect(ray, hit)) {
-        rec.miss(scene_.flat.background);
-        return scene_.flat.background;
+        rec.miss(scene_.data.background);
+        return scene_.data.background;
     }
     const ShadingPoint p = shading_point(ray, hit);
     rec.hit(ray, hit, p.s, p.n, p.outside, depth);
@@ -171,7 +171,7 @@ template <class Recorder>
 glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight,
                                       const SampleContext& ctx, RayCounts& counts, const PacketShadows* shadows,
                                       int lane, Recorder& rec) const {
-    const FlatScene& flat = scene_.flat;
+    const SceneData& flat = scene_.data;
     const Surface& s = p.s;
     const Material& m = *s.material;
     // References, not copies: the vectors live in `p` across the calls below either way (no

@@ -10,7 +10,7 @@ namespace whitted {
 
 bool load_meshes(FlattenResult& flat, const std::string& scene_path, const std::vector<std::string>& search_dirs,
                  std::vector<Diagnostic>& diagnostics) {
-    FlatScene& scene = flat.scene;
+    SceneData& scene = flat.scene;
     constexpr std::uint32_t kNoMesh = 0xffffffffu;
     std::vector<std::uint32_t> mesh_of_material(scene.materials.size(), kNoMesh);
     std::unordered_map<std::string, std::uint32_t> mesh_of_path;      // found file → mesh

@@ -3,7 +3,7 @@
 // positions, normals and texture coordinates, polygons triangulated, OBJ materials ignored.
 #include <string>
 
-#include "mesh/triangle_mesh.h"
+#include "data/triangle_mesh.h"
 
 namespace whitted {
 

@@ -3,7 +3,7 @@
 // consistently wound mesh of a chosen size without a file.
 #include <functional>
 
-#include "mesh/triangle_mesh.h"
+#include "data/triangle_mesh.h"
 
 namespace whitted {
 

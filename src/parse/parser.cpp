@@ -1,6 +1,6 @@
 #include "parse/parser_impl.h"
 
-#include "parse/read_file.h"
+#include "base/read_file.h"
 
 namespace whitted {
 

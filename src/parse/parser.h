@@ -6,8 +6,8 @@
 #include <string_view>
 #include <vector>
 
-#include "parse/diagnostic.h"
-#include "scene/scene_description.h"
+#include "base/diagnostic.h"
+#include "description/scene_description.h"
 
 namespace whitted {
 

@@ -18,7 +18,7 @@
 #include "parse/number.h"
 #include "parse/scene_checks.h"
 #include "parse/suggest.h"
-#include "parse/transforms.h"
+#include "base/transforms.h"
 
 namespace whitted::parse_detail {
 

@@ -3,8 +3,8 @@
 // Each returns the first problem found (in file order) as an error, or nothing.
 #include <optional>
 
-#include "parse/diagnostic.h"
-#include "scene/scene_description.h"
+#include "base/diagnostic.h"
+#include "description/scene_description.h"
 
 namespace whitted {
 

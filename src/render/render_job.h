@@ -47,7 +47,7 @@ struct RenderJob {
     std::function<void(const Tile&)> on_tile;
 
     PixelRegion render_region() const { return region.value_or(PixelRegion{0, 0, width, height}); }
-    Camera camera_for(const Scene& scene) const { return camera.value_or(scene.flat.camera); }
+    Camera camera_for(const Scene& scene) const { return camera.value_or(scene.data.camera); }
     int tile_count() const;
 };
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "render/tile_renderer.h"
-#include "util/parallel_for.h"
+#include "base/parallel_for.h"
 
 namespace whitted {
 namespace {

@@ -8,9 +8,9 @@
 
 #include <glm/glm.hpp>
 
-namespace whitted {
+#include "base/math.h"
 
-constexpr float kPi = 3.14159265358979323846f;
+namespace whitted {
 
 // Uniform over the unit disc (Shirley and Chiu 1997, concentric mapping).
 inline glm::vec2 concentric_disc(glm::vec2 u) {

@@ -4,7 +4,7 @@
 // matrix, integrator/area_lights.h).
 #include <glm/glm.hpp>
 
-#include "scene/scene_description.h"
+#include "data/shape_kind.h"
 #include "shapes/unit_shapes.h"
 
 namespace whitted {

@@ -6,9 +6,9 @@
 // Every shape is convex, so a line meets it in at most one interval [t_in, t_out].
 #include <glm/glm.hpp>
 
-#include "scene/scene_description.h"
-#include "shapes/bounds.h"
-#include "shapes/ray.h"
+#include "data/shape_kind.h"
+#include "base/bounds.h"
+#include "base/ray.h"
 
 namespace whitted {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-#include "flatten/flat_scene.h"
+#include "data/texture_image.h"
 #include "texture/texture_decode.h"
 
 namespace whitted {

@@ -8,7 +8,7 @@
 
 #include <stb/stb_image.h>
 
-#include "parse/read_file.h"
+#include "base/read_file.h"
 #include "texture/ascii_ppm.h"
 #include "texture/jpeg_decode.h"
 #include "texture/png_check.h"

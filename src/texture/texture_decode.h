@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "flatten/flat_scene.h"
+#include "data/texture_image.h"
 
 namespace whitted {
 

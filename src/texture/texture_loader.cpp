@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <unordered_map>
 
-#include "parse/read_file.h"
+#include "base/read_file.h"
 #include "texture/texture_decode.h"
 
 namespace whitted {

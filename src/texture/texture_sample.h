@@ -1,7 +1,7 @@
 #pragma once
 #include <glm/glm.hpp>
 
-#include "flatten/flat_scene.h"
+#include "data/texture_image.h"
 
 namespace whitted {
 

@@ -241,7 +241,7 @@ TEST(Flatten, SpotlightFromTheFileLightsInsideItsApertureOnly) {
         "mastersubgraph root [ trans [ object sphere [ ] ] ]\n",
         "spot.sc");
     ASSERT_TRUE(r.ok()) << r.diagnostics[0].str();
-    const Light& spot = r.scene->flat.lights.at(0);
+    const Light& spot = r.scene->data.lights.at(0);
     EXPECT_NEAR(spot.cos_aperture, std::cos(glm::radians(30.0f)), 1e-6f);
     expect_vec(spot.direction, {0, -1, 0});
     const float inside = 5.0f * std::tan(glm::radians(29.0f)), outside = 5.0f * std::tan(glm::radians(31.0f));
@@ -253,7 +253,7 @@ TEST(Flatten, SpotlightFromTheFileLightsInsideItsApertureOnly) {
                         "spot.sc");
     ASSERT_TRUE(r.ok());
     const float c20 = std::cos(glm::radians(20.0f));
-    expect_vec(sample_light(r.scene->flat.lights.at(0), {5.0f * std::tan(glm::radians(20.0f)), 0, 0}).intensity,
+    expect_vec(sample_light(r.scene->data.lights.at(0), {5.0f * std::tan(glm::radians(20.0f)), 0, 0}).intensity,
                glm::vec3(c20 * c20));
 }
 

@@ -29,7 +29,7 @@ protected:
         const Scene& s = *result_.scene;
         const Ray ray{origin, direction};
         Hit h;
-        if (!intersect_nearest(s.bvh, s.flat.instances, ray, 0.0f, 1e30f, h)) return std::nullopt;
+        if (!intersect_nearest(s.bvh, s.data.instances, ray, 0.0f, 1e30f, h)) return std::nullopt;
         return WorldHit{h.t, surface_at(s, ray, h).normal};
     }
     LoadResult result_;

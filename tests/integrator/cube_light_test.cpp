@@ -59,7 +59,7 @@ TEST(CubeLight, DensityCoversExactlyWhatTheShadingPointSees) {
     test::SceneBuilder b;
     b.add(ShapeKind::Cube, m, test::emitter(glm::vec3(1.0f)));
     const Scene scene = b.build();
-    const Instance& inst = scene.flat.instances[0];
+    const Instance& inst = scene.data.instances[0];
     const PathLights lights(scene);
     const CubeLight cube(inst);
     // In front of one face, of two, of three, just off a face's middle, near an edge, far, inside.

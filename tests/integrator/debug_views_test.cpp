@@ -19,7 +19,7 @@ glm::vec3 view(const Scene& scene, RenderMode mode, glm::vec3 origin, glm::vec3 
     one.rays[0] = Ray{origin, glm::normalize(toward - origin)};
     one.active = 1;
     glm::vec3 out[kPacketSize];
-    make_integrator(scene, scene.flat.camera, {mode, 5})->radiance(one, Sampler(), out, counts);
+    make_integrator(scene, scene.data.camera, {mode, 5})->radiance(one, Sampler(), out, counts);
     return out[0];
 }
 

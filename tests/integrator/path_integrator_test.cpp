@@ -57,10 +57,10 @@ TEST(PathIntegrator, OneBounceUnderPointLightsIsTheWhittedDiffuseTerm) {
         b.light(test::point_light({2, 3, 2}, glm::vec3(0.6f), {1, 0.1f, 0.02f}));
         if (lights > 1) b.light(test::point_light({-3, 2, 1}, glm::vec3(0.3f, 0.35f, 0.4f)));
         Scene s = b.ambient(glm::vec3(0.0f)).build();
-        s.flat.camera.eye = {0, 1.5f, 4};
-        s.flat.camera.forward = glm::normalize(glm::vec3(0, -0.4f, -1));
-        s.flat.camera.right = glm::normalize(glm::cross(s.flat.camera.forward, glm::vec3(0, 1, 0)));
-        s.flat.camera.up = glm::cross(s.flat.camera.right, s.flat.camera.forward);
+        s.data.camera.eye = {0, 1.5f, 4};
+        s.data.camera.forward = glm::normalize(glm::vec3(0, -0.4f, -1));
+        s.data.camera.right = glm::normalize(glm::cross(s.data.camera.forward, glm::vec3(0, 1, 0)));
+        s.data.camera.up = glm::cross(s.data.camera.right, s.data.camera.forward);
         return s;
     };
     for (int lights : {1, 2}) {
@@ -71,7 +71,7 @@ TEST(PathIntegrator, OneBounceUnderPointLightsIsTheWhittedDiffuseTerm) {
         job.sampling.spp = lights == 1 ? 4 : 64;
         auto render_mode = [&](RenderMode mode) {
             job.integrator = {mode, 1};
-            const auto integrator = make_integrator(scene, scene.flat.camera, job.integrator);
+            const auto integrator = make_integrator(scene, scene.data.camera, job.integrator);
             Film film(job.width, job.height);
             render(*integrator, job, film);
             return film;
@@ -103,7 +103,7 @@ TEST(PathIntegrator, PlaneUnderASphericalEmitterHasTheClosedFormIrradiance) {
     b.add(ShapeKind::Cube, test::translate_scale({0, -0.5f, 0}, {100, 1, 100}), plane);
     b.add(ShapeKind::Sphere, test::translate_scale({0, h, 0}, glm::vec3(2 * r)), test::emitter(glm::vec3(L)));
     const Scene scene = b.build();
-    const PathIntegrator path(scene, scene.flat.camera, 1);
+    const PathIntegrator path(scene, scene.data.camera, 1);
     for (float x : {0.0f, 0.8f, 1.5f, 2.5f}) {
         const double D = std::sqrt(double(x) * x + double(h) * h);
         const double want = L * (r / D) * (r / D) * (h / D);
@@ -122,7 +122,7 @@ TEST(PathLights, AreaDensityIntegratesToOneUnderNonUniformScale) {
         b.add(kind, m, test::emitter(glm::vec3(1.0f)));
         const Scene scene = b.build();
         const PathLights lights(scene);
-        const Instance& inst = scene.flat.instances[0];
+        const Instance& inst = scene.data.instances[0];
         const glm::vec3 inside = glm::vec3(m * glm::vec4(0, kind == ShapeKind::Cone ? -0.25f : 0.0f, 0, 1));
         const int n = 20000;
         const Sampler sampler(1, n);
@@ -161,12 +161,12 @@ TEST(PathLights, EllipsoidAreaIsTheSpheroidsClosedForm) {
         test::SceneBuilder b;
         b.add(ShapeKind::Ellipsoid, test::translate_scale({0, 0, 0}, glm::vec3(s)), test::emitter(glm::vec3(1.0f)));
         const Scene scene = b.build();
-        EXPECT_NEAR(PathLights::world_area(scene.flat.instances[0]), want * s * s, 1e-3 * want * s * s) << "scale " << s;
+        EXPECT_NEAR(PathLights::world_area(scene.data.instances[0]), want * s * s, 1e-3 * want * s * s) << "scale " << s;
     }
     // Stretched by (1, 2, 1) it is the sphere of radius 1: 4π.
     test::SceneBuilder b;
     b.add(ShapeKind::Ellipsoid, test::translate_scale({0, 0, 0}, {1, 2, 1}), test::emitter(glm::vec3(1.0f)));
-    EXPECT_NEAR(PathLights::world_area(b.build().flat.instances[0]), 4 * kPi, 1e-3 * 4 * kPi);
+    EXPECT_NEAR(PathLights::world_area(b.build().data.instances[0]), 4 * kPi, 1e-3 * 4 * kPi);
 }
 
 // Pearson's chi-square test of a BSDF's samples against its pdf (as pbrt-v4's Chi2Test): directions

@@ -62,7 +62,7 @@ TEST(PathMeshLight, PlaneUnderAnEmissiveQuadHasTheViewFactorRadiance) {
     const glm::mat4 m = glm::scale(glm::rotate(glm::rotate(glm::translate(glm::mat4(1.0f), {0, h, 0}), turn, {0, 1, 0}),
                                                kPi, {1, 0, 0}),
                                    {a, 1.0f, b});
-    FlatScene flat;
+    SceneData flat;
     Material plane;
     plane.diffuse = glm::vec3(1.0f);
     flat.materials = {plane, test::emitter(glm::vec3(L))};
@@ -71,7 +71,7 @@ TEST(PathMeshLight, PlaneUnderAnEmissiveQuadHasTheViewFactorRadiance) {
     flat.meshes.push_back(unit_quad());
     flat.background = glm::vec3(0.0f);
     const Scene scene = accelerate(flat);
-    const PathIntegrator path(scene, scene.flat.camera, 1);
+    const PathIntegrator path(scene, scene.data.camera, 1);
     for (const glm::vec2 p : {glm::vec2(0, 0), glm::vec2(0.3f, -0.2f), glm::vec2(1.2f, 0.5f), glm::vec2(-2.5f, 1.0f)}) {
         // The point in the rectangle's frame (turned back about y).
         const double c = std::cos(turn), s = std::sin(turn);
@@ -91,7 +91,7 @@ TEST(PathMeshLight, FurnaceInsideAClosedMeshSeesEmitOverOneMinusAlbedo) {
     Material m;
     m.diffuse = glm::vec3(alb);
     m.emit = glm::vec3(e);
-    FlatScene flat;
+    SceneData flat;
     flat.materials = {m};
     flat.instances.push_back(mesh_instance(test::translate_scale({0.3f, -0.2f, 0.1f}, {20.0f, 9.0f, 14.0f}), 0, 0));
     flat.meshes.push_back(flat_sphere());
@@ -104,13 +104,13 @@ TEST(PathMeshLight, FurnaceInsideAClosedMeshSeesEmitOverOneMinusAlbedo) {
 TEST(PathMeshLight, SamplesAreUniformByWorldAreaUnderAnAffineMap) {
     const glm::mat4 m = glm::rotate(test::translate_scale({1, 2, 3}, {2.0f, 0.7f, 1.3f}), 0.6f,
                                     glm::normalize(glm::vec3(1, 2, 0.5f)));
-    FlatScene flat;
+    SceneData flat;
     flat.materials = {test::emitter(glm::vec3(1.0f))};
     flat.instances.push_back(mesh_instance(m, 0, 0));
     flat.meshes.push_back(flat_sphere());
     const Scene scene = accelerate(flat);
     const PathLights lights(scene);
-    const TriangleMesh& mesh = scene.flat.meshes[0];
+    const TriangleMesh& mesh = scene.data.meshes[0];
     double area = 0;
     glm::dvec3 centroid(0.0);
     for (const TriangleIndices& t : mesh.triangles) {
@@ -137,7 +137,7 @@ TEST(PathMeshLight, SamplesAreUniformByWorldAreaUnderAnAffineMap) {
         EXPECT_NEAR(s.mean, centroid[k], 4 * s.se + 1e-4) << "axis " << k;
     }
 
-    const Instance& inst = scene.flat.instances[0];
+    const Instance& inst = scene.data.instances[0];
     const glm::vec3 inside = glm::vec3(m * glm::vec4(0, 0, 0, 1));
     std::vector<double> terms;
     for (int i = 0; i < n; ++i) {
@@ -164,7 +164,7 @@ TEST(PathMeshLight, EmissiveMeshCubeLightsTheFloorAsAnEmissiveObjectCube) {
     const glm::mat4 m = glm::rotate(test::translate_scale({0.2f, 1.2f, -0.3f}, {1.4f, 0.3f, 0.6f}), 0.5f,
                                     glm::normalize(glm::vec3(0.3f, 1, 0.2f)));
     auto floor_radiance = [&](bool as_mesh) {
-        FlatScene flat;
+        SceneData flat;
         Material floor;
         floor.diffuse = glm::vec3(0.8f);
         flat.materials = {floor, test::emitter(glm::vec3(3.0f))};
@@ -177,7 +177,7 @@ TEST(PathMeshLight, EmissiveMeshCubeLightsTheFloorAsAnEmissiveObjectCube) {
         }
         flat.background = glm::vec3(0.0f);
         const Scene scene = accelerate(flat);
-        const PathIntegrator path(scene, scene.flat.camera, 3);
+        const PathIntegrator path(scene, scene.data.camera, 3);
         std::vector<Stats> out;
         for (float x : {0.0f, 0.7f, -1.1f, 2.0f})
             out.push_back(stats_of(samples_of(path, Ray{{x, 0.5f, 0.4f}, {0, -1, 0}}, 4096, as_mesh ? 1 : 2)));

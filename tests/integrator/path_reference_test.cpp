@@ -44,7 +44,7 @@ struct PixelStats {
 // spp samples of every pixel, seeded apart from the reference's, one by one (so that the spread
 // of each pixel's samples is known).
 PixelStats render_samples(const Scene& scene, int spp, std::uint32_t seed) {
-    const PathIntegrator path(scene, scene.flat.camera, 64);
+    const PathIntegrator path(scene, scene.data.camera, 64);
     const Sampler sampler(1, spp, seed);
     PixelStats out;
     RayCounts counts;
@@ -54,7 +54,7 @@ PixelStats render_samples(const Scene& scene, int spp, std::uint32_t seed) {
             for (int i = 0; i < spp; ++i) {
                 const SampleKey key{std::uint32_t(x), std::uint32_t(y), std::uint32_t(i)};
                 const glm::vec2 at = sampler.pixel_offset(key);
-                const Ray ray = scene.flat.camera.generate_ray(kSize, kSize, float(x) + at.x, float(y) + at.y,
+                const Ray ray = scene.data.camera.generate_ray(kSize, kSize, float(x) + at.x, float(y) + at.y,
                                                                sampler.get2d(key, dimension::kLens));
                 const glm::dvec3 c(path.radiance(ray, key, sampler, counts));
                 s += c;

@@ -42,7 +42,7 @@ inline void expect_furnace_image(const Scene& scene, double want) {
     job.height = 10;
     job.integrator = {RenderMode::Path, 64};
     job.sampling.spp = 256;
-    const auto integrator = make_integrator(scene, scene.flat.camera, job.integrator);
+    const auto integrator = make_integrator(scene, scene.data.camera, job.integrator);
     Film film(job.width, job.height);
     const RenderStats rs = render(*integrator, job, film);
     EXPECT_EQ(rs.rays.rejected, 0u);

@@ -109,7 +109,7 @@ TEST(SoftShadow, TheAnalyticSegmentIsWhatTheQuadratureIntegrates) {
 
 TEST(SoftShadow, PenumbraMatchesTheVisibleSegmentOfTheDisc) {
     const Scene scene = penumbra_scene();
-    const WhittedIntegrator integrator(scene, scene.flat.camera, 5);
+    const WhittedIntegrator integrator(scene, scene.data.camera, 5);
     const int n = 1024;
     int in_penumbra = 0;
     for (std::size_t k = 0; k < kPoints.size(); ++k) {
@@ -125,7 +125,7 @@ TEST(SoftShadow, PenumbraMatchesTheVisibleSegmentOfTheDisc) {
 
 TEST(SoftShadow, ErrorFallsAsTheSampleCountGrows) {
     const Scene scene = penumbra_scene();
-    const WhittedIntegrator integrator(scene, scene.flat.camera, 5);
+    const WhittedIntegrator integrator(scene, scene.data.camera, 5);
     double err[2] = {};
     const int counts[2] = {16, 1024};
     for (int c = 0; c < 2; ++c) {
@@ -147,10 +147,10 @@ TEST(SoftShadow, ErrorFallsAsTheSampleCountGrows) {
 
 TEST(SoftShadow, RadiusZeroOrOneSampleIsThePointLight) {
     Scene disc = penumbra_scene();
-    const WhittedIntegrator soft(disc, disc.flat.camera, 5);
+    const WhittedIntegrator soft(disc, disc.data.camera, 5);
     Scene hard = penumbra_scene();
-    hard.flat.lights[0].radius = 0.0f;
-    const WhittedIntegrator point(hard, hard.flat.camera, 5);
+    hard.data.lights[0].radius = 0.0f;
+    const WhittedIntegrator point(hard, hard.data.camera, 5);
     RayCounts counts;
     for (double px : kPoints) {
         const Ray ray{{float(px), 5, 0}, {0, -1, 0}};

@@ -17,7 +17,7 @@ constexpr float kTol = 1e-4f;
 
 glm::vec3 shade(const Scene& scene, const Ray& ray, int max_depth = 5) {
     RayCounts counts;
-    return WhittedIntegrator(scene, scene.flat.camera, max_depth).radiance(ray, SampleKey{}, Sampler(), counts);
+    return WhittedIntegrator(scene, scene.data.camera, max_depth).radiance(ray, SampleKey{}, Sampler(), counts);
 }
 
 void expect_color(glm::vec3 got, glm::vec3 want, float tol = kTol) {

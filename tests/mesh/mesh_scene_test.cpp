@@ -38,9 +38,9 @@ TEST_F(MeshScene, OneMeshPerFileHoweverManyObjectsAndInstances) {
         "]\n",
         scene_);
     ASSERT_TRUE(r.ok()) << errors_of(r);
-    EXPECT_EQ(r.scene->flat.instances.size(), 5u);
-    EXPECT_EQ(r.scene->flat.meshes.size(), 2u);  // cube.obj (three spellings) and models/cube.obj
-    for (const Instance& inst : r.scene->flat.instances) {
+    EXPECT_EQ(r.scene->data.instances.size(), 5u);
+    EXPECT_EQ(r.scene->data.meshes.size(), 2u);  // cube.obj (three spellings) and models/cube.obj
+    for (const Instance& inst : r.scene->data.instances) {
         EXPECT_EQ(inst.kind, ShapeKind::Mesh);
         EXPECT_LT(inst.mesh, 2u);
     }

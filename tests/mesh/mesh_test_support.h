@@ -8,7 +8,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "mesh/triangle_mesh.h"
+#include "data/triangle_mesh.h"
 #include "mesh/uv_sphere.h"
 
 namespace whitted::test {

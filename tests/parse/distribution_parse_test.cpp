@@ -65,7 +65,7 @@ TEST(ParseDistribution, LightRadiusAndAngle) {
     EXPECT_EQ(r.scene.lights[0].radius, 0.5f);
     EXPECT_EQ(r.scene.lights[1].radius, 2.0f);
     EXPECT_EQ(r.scene.lights[2].angle_deg, 0.53f);
-    const FlatScene flat = flatten(r.scene).scene;
+    const SceneData flat = flatten(r.scene).scene;
     EXPECT_FLOAT_EQ(flat.lights[0].radius, 0.5f);
     EXPECT_NEAR(flat.lights[2].cos_half_angle, std::cos(0.53 * 3.14159265358979 / 360.0), 1e-7);
     EXPECT_EQ(flat.lights[0].cos_half_angle, 1.0f);  // the defaults: no extent

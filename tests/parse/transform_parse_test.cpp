@@ -1,7 +1,7 @@
 // Trans blocks: composition order, rotate, matrixRC/CR, singular matrices (scene-format.md §3).
 #include <gtest/gtest.h>
 
-#include "parse/transforms.h"
+#include "base/transforms.h"
 #include "parse_test_util.h"
 
 namespace whitted {

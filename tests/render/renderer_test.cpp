@@ -64,12 +64,12 @@ TEST(Renderer, ImageIsByteIdenticalForAnyThreadCount) {
 // The image as it was made before camera rays were traced in packets: pixel by pixel, each
 // camera ray traced on its own (WhittedIntegrator::radiance(ray, …) finds its hit itself).
 Image one_ray_at_a_time(const Scene& scene, const RenderJob& o, RayCounts& counts) {
-    const auto integrator = make_integrator(scene, scene.flat.camera, o.integrator);
+    const auto integrator = make_integrator(scene, scene.data.camera, o.integrator);
     const Sampler sampler;
     Image image(o.width, o.height);
     for (int y = 0; y < o.height; ++y)
         for (int x = 0; x < o.width; ++x) {
-            const Ray ray = scene.flat.camera.generate_ray(o.width, o.height, x + 0.5f, y + 0.5f, glm::vec2(0.5f));
+            const Ray ray = scene.data.camera.generate_ray(o.width, o.height, x + 0.5f, y + 0.5f, glm::vec2(0.5f));
             const SampleKey key{std::uint32_t(x), std::uint32_t(y), 0};
             glm::vec3 c;
             if (o.integrator.mode == RenderMode::Whitted) {

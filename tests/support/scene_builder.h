@@ -23,7 +23,7 @@ public:
     Scene build() { return accelerate(flat_); }
 
 private:
-    FlatScene flat_;
+    SceneData flat_;
 };
 
 inline glm::mat4 translate_scale(glm::vec3 t, glm::vec3 s) {

@@ -47,9 +47,9 @@ TEST_F(TextureScene, SameFileDecodedOncePerScene) {
         SCOPED_TRACE(std::string(a) + " and " + b);
         LoadResult r = load_scene_text(two_objects(a, b), scene_);
         ASSERT_TRUE(r.ok());
-        EXPECT_EQ(r.scene->flat.textures.size(), 1u);
+        EXPECT_EQ(r.scene->data.textures.size(), 1u);
         EXPECT_EQ(r.stats.textures, 1u);
-        for (const Material& m : r.scene->flat.materials) EXPECT_EQ(m.texture, 0);
+        for (const Material& m : r.scene->data.materials) EXPECT_EQ(m.texture, 0);
         EXPECT_TRUE(r.missing_textures.empty());
         EXPECT_TRUE(r.diagnostics.empty());
     }
@@ -57,7 +57,7 @@ TEST_F(TextureScene, SameFileDecodedOncePerScene) {
     LoadResult r = load_scene_text(two_objects("t.png", "t.png"), scene_);
     ASSERT_TRUE(r.ok());
     std::set<std::pair<float, float>> repeats;
-    for (const Material& m : r.scene->flat.materials) repeats.insert({m.repeat_u, m.repeat_v});
+    for (const Material& m : r.scene->data.materials) repeats.insert({m.repeat_u, m.repeat_v});
     EXPECT_EQ(repeats, (std::set<std::pair<float, float>>{{1, 1}, {2, 3}}));
 }
 
@@ -92,7 +92,7 @@ TEST_F(TextureScene, MissingTexturesAsDataAndRetry) {
     r = load_scene_text(text, scene_, options);
     ASSERT_TRUE(r.ok());
     EXPECT_TRUE(r.missing_textures.empty());
-    EXPECT_EQ(r.scene->flat.textures.size(), 2u);
+    EXPECT_EQ(r.scene->data.textures.size(), 2u);
 }
 
 TEST_F(TextureScene, CheckerFallbackRendersMagentaAndBlack) {
@@ -206,12 +206,12 @@ TEST_F(TextureScene, CliWildScenesFindTheirTextures) {
         LoadResult loaded = load_scene(dir + "/" + name);
         ASSERT_TRUE(loaded.ok());
         EXPECT_TRUE(loaded.missing_textures.empty());
-        EXPECT_GE(loaded.scene->flat.textures.size(), 1u);
+        EXPECT_GE(loaded.scene->data.textures.size(), 1u);
     }
     // test_texture.sc names four files (earth, darkwood twice, wood twice, pattern1 thrice).
     LoadResult loaded = load_scene(dir + "/test_texture.sc");
     ASSERT_TRUE(loaded.ok());
-    EXPECT_EQ(loaded.scene->flat.textures.size(), 4u);
+    EXPECT_EQ(loaded.scene->data.textures.size(), 4u);
 }
 
 // ---- the showcase --------------------------------------------------------------------------------
@@ -223,7 +223,7 @@ TEST(TextureShowcase, LoadsCleanlyWithTexturesOnAllFourShapes) {
     for (const auto& d : r.diagnostics) messages += d.str() + "\n";
     ASSERT_TRUE(r.ok()) << messages;
     EXPECT_TRUE(r.diagnostics.empty()) << messages;
-    const FlatScene& s = r.scene->flat;
+    const SceneData& s = r.scene->data;
     EXPECT_EQ(s.textures.size(), 5u);
     std::set<ShapeKind> textured;
     for (const Instance& i : s.instances)

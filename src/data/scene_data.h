@@ -1,0 +1,30 @@
+#pragma once
+// The render-ready scene: flat arrays of instances, materials and lights that the
+// acceleration structure and the integrator read. No pointers, no per-ray allocation.
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "camera/camera.h"
+#include "data/instance.h"
+#include "data/light.h"
+#include "data/material.h"
+#include "data/provenance.h"
+#include "data/texture_image.h"
+#include "data/triangle_mesh.h"
+
+namespace whitted {
+
+struct SceneData {
+    std::vector<Instance> instances;
+    std::vector<Material> materials;
+    std::vector<Light> lights;
+    std::vector<TextureImage> textures;
+    std::vector<TriangleMesh> meshes;  // one per OBJ file, however many instances draw it
+    Camera camera;  // the file's camera: what a render uses unless it is given another
+    glm::vec3 background{0.0f};
+    glm::vec3 ambient_intensity{1.0f};
+    Provenance provenance;  // where each instance, material and light came from (the inspector's)
+};
+
+}  // namespace whitted
