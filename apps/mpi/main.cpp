@@ -10,6 +10,7 @@
 #include <iostream>
 #include <thread>
 
+#include "accel/scene.h"
 #include "interrupt.h"
 #include "load_report.h"
 #include "ranks.h"

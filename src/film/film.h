@@ -9,15 +9,9 @@
 #include <glm/glm.hpp>
 
 #include "film/image.h"
+#include "film/pixel_region.h"
 
 namespace whitted {
-
-struct PixelRegion {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // pixels [x0, x1) × [y0, y1)
-    int width() const { return x1 - x0; }
-    int height() const { return y1 - y0; }
-    bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
-};
 
 struct FilmPixel {
     glm::vec3 sum{0.0f};

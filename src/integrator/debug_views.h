@@ -3,6 +3,7 @@
 // (raycast: the diffuse colour × texel, the background where nothing is hit), the world normal
 // mapped to colour (normals: 0.5·(n + 1), black where nothing is hit), and the distance (depth:
 // white at the nearest point of the scene's bounds, black at the farthest).
+#include "accel/scene.h"
 #include "integrator/integrator.h"
 
 namespace whitted {

@@ -1,6 +1,6 @@
 #pragma once
 // What turns camera rays into colours: the interface every rendering method implements (Whitted
-// ray tracing, the debug views; a path tracer next). The renderer hands an integrator batches
+// ray tracing, path tracing, the debug views), each in a file of its own. The renderer hands an integrator batches
 // of camera samples, a packet at a time, so that it can trace them together; each sample names
 // its pixel and index, from which the integrator draws any further numbers it needs (a point on
 // an area light, a glossy direction) through the render's Sampler.
@@ -8,13 +8,15 @@
 
 #include <glm/glm.hpp>
 
-#include "accel/scene.h"
+#include "base/ray.h"
 #include "camera/camera.h"
+#include "integrator/integrator_settings.h"
 #include "integrator/ray_counts.h"
-#include "integrator/render_mode.h"
 #include "sampler/sampler.h"
 
 namespace whitted {
+
+struct Scene;  // accel/scene.h: what an integrator asks its rays of
 
 // Camera samples traced together: the lanes set in `active`.
 struct CameraBatch {
@@ -42,11 +44,6 @@ public:
 protected:
     const Scene& scene_;
     Camera camera_;
-};
-
-struct IntegratorSettings {
-    RenderMode mode = RenderMode::Whitted;
-    int max_depth = 5;  // camera ray = depth 0; no ray deeper than this is traced (path: bounces)
 };
 
 // The integrator for `settings.mode`, rendering `scene` as seen by `camera`.

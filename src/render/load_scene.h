@@ -5,11 +5,12 @@
 #include <string>
 #include <vector>
 
-#include "accel/scene.h"
 #include "parse/parser.h"
 #include "texture/texture_loader.h"
 
 namespace whitted {
+
+struct Scene;  // accel/scene.h
 
 // Three quarters of this machine's RAM: what a scene may take by default.
 std::size_t default_max_memory();

@@ -1,16 +1,20 @@
 #pragma once
-// One render, described once: what the frontends (CLI, viewer; MPI ranks later) ask of the
-// renderer. The image size, the part of it to render, which samples, how, and how to report.
+// One render, described once: what the front ends (CLI, viewer, MPI ranks) ask of the renderer.
+// The image size, the part of it to render, which samples, how, and how to report. Settings only:
+// it names the scene without including it.
 #include <atomic>
 #include <cstdint>
 #include <functional>
 #include <optional>
 
 #include "camera/camera.h"
-#include "film/film.h"
-#include "integrator/integrator.h"
+#include "film/pixel_region.h"
+#include "integrator/integrator_settings.h"
+#include "sampler/sampler.h"
 
 namespace whitted {
+
+struct Scene;  // accel/scene.h
 
 using Tile = PixelRegion;
 
@@ -47,7 +51,7 @@ struct RenderJob {
     std::function<void(const Tile&)> on_tile;
 
     PixelRegion render_region() const { return region.value_or(PixelRegion{0, 0, width, height}); }
-    Camera camera_for(const Scene& scene) const { return camera.value_or(scene.data.camera); }
+    Camera camera_for(const Scene& scene) const;  // the job's camera, or the scene file's
     int tile_count() const;
 };
 

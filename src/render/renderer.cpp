@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "render/tile_renderer.h"
+#include "accel/scene.h"
 #include "base/parallel_for.h"
 
 namespace whitted {
@@ -20,6 +21,8 @@ std::vector<Tile> cut_into_tiles(const PixelRegion& r, int tile_size) {
 }
 
 }  // namespace
+
+Camera RenderJob::camera_for(const Scene& scene) const { return camera.value_or(scene.data.camera); }
 
 int RenderJob::tile_count() const { return int(cut_into_tiles(render_region(), tile_size).size()); }
 

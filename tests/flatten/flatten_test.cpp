@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "accel/scene.h"
 #include "accel/instance_geometry.h"
 #include "flatten/flatten.h"
 #include "integrator/light_sample.h"

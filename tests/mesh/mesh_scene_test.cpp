@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "accel/scene.h"
 #include "mesh_test_support.h"
 #include "render/load_scene.h"
 #include "render/renderer.h"

@@ -8,6 +8,7 @@
 
 #include <set>
 
+#include "accel/scene.h"
 #include "film/image_io.h"
 #include "support/run_process.h"
 #include "support/needs.h"
