@@ -1,4 +1,4 @@
-// Triangle meshes, whitted against Embree 3 on the same triangles and the same rays (issue 16).
+// Triangle meshes, whitted against Embree 3 on the same triangles and the same rays.
 // One engine and one scene per process, so that each process's peak memory is its own:
 //   mesh_bench --engine whitted|embree --scene big|instances --threads 1|2 [--passes 4]
 //   mesh_bench --engine both --scene big|instances [--passes ROUNDS]   (ratios, interleaved: run_both)

@@ -1,4 +1,4 @@
-// The viewer's moving-camera render path (issue 12): how soon the first coarse frame follows a
+// The viewer's moving-camera render path: how soon the first coarse frame follows a
 // camera change, and how many coarse frames a second a drag gets. Drives the viewer's
 // RenderController exactly as the window does (no display). Build with -DWHITTED_BUILD_BENCH=ON in
 // Release; run: build/bench/viewer_nav_bench [SCENE] [WIDTH HEIGHT THREADS]

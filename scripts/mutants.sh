@@ -26,7 +26,7 @@ names=() files=() finds=() plants=() filters=()
 # mutant NAME FILE 'LINE AS IT IS' 'LINE PLANTED' 'GTEST FILTER'
 mutant() { names+=("$1"); files+=("$2"); finds+=("$3"); plants+=("$4"); filters+=("$5"); }
 
-# --- The survivors of the audit of issue 17 and the bugs its new tests were written for.
+# --- The survivors of the test audit and the bugs its new tests were written for.
 mutant sah-ignores-left-count src/accel/bvh_build.cpp \
     'const float cost = acc.area() * float(acc_n) + right_cost[i + 1];' \
     'const float cost = acc.area() + right_cost[i + 1];' \

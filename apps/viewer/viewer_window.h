@@ -66,7 +66,7 @@ public:
     void resize(int x, int y, int w, int h) override;
     int handle(int event) override;
 
-    // The camera (issue 12): moved on the image, back to the file's (Home), into the text.
+    // The camera: moved on the image, back to the file's (Home), into the text.
     void home();
     void copy_camera();
     void save_camera_into_scene();

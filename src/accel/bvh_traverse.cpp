@@ -62,7 +62,7 @@ bool nearest_with_meshes(const Bvh& bvh, const Instance* inst, const MeshBvh* me
 }
 
 // The walk of a scene of unit shapes alone, written out by hand as before the mesh-capable walk
-// (78d87e6) rather than through walk_nearest: the same order, pruning and tie rule (so the same
+// rather than through walk_nearest: the same order, pruning and tie rule (so the same
 // hits), but GCC keeps the box test's per-ray row offsets in registers here and not in the
 // template (about 100 M instructions of the one-sample 1080p render, bench/RESULTS.md).
 bool nearest_unit_shapes(const Bvh& bvh, const Instance* inst, const Ray& ray, float t_min, float t_max, Hit& hit) {

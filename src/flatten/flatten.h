@@ -24,7 +24,7 @@ struct FlattenResult {
 // What one object costs at the peak of a load: 56 bytes of Instance, about 25 of BVH nodes (about
 // 50 where the scene has meshes: its top level is 8-wide, accel/bvh_node.h) and the build's
 // temporary arrays (bench/RESULTS.md: 1M instances, 120 MB peak RSS of a whole CLI run;
-// issue 15 measured 4.9 GB for 48M, 102 bytes each). Rounded up: an estimate must not be low.
+// 4.9 GB measured for 48M, 102 bytes each). Rounded up: an estimate must not be low.
 constexpr std::size_t kBytesPerInstance = 128;
 // And each step of the walk (a trans block or a subgraph use) may add one 8-byte provenance link,
 // the pixel inspector's chain of lines (flatten/provenance.h).

@@ -31,8 +31,8 @@ const char* undocumented_format(std::string_view b) {
 }
 
 // stb reads the pixels of a binary PNM and of an uncompressed TGA with one copy that it does not
-// check: a file shorter than its header says decodes into uninitialised memory (issue 15,
-// finding 6). The bytes the header promises, or 0 if these are not such a file (or a header
+// check: a file shorter than its header says decodes into uninitialised memory
+// (docs/robustness.md). The bytes the header promises, or 0 if these are not such a file (or a header
 // stb will refuse anyway).
 std::uint64_t promised_bytes(std::string_view b) {
     if (b.size() >= 2 && b[0] == 'P' && (b[1] == '5' || b[1] == '6')) {

@@ -1,4 +1,4 @@
-// The `whitted` command against hostile input and a hurried user (issue 15): special files,
+// The `whitted` command against hostile input and a hurried user (docs/robustness.md): special files,
 // signals, a good image never replaced, names as long as a file name may be, the output checked
 // before the render, --texture-path not swallowing the scene, a narrow terminal.
 #include <sys/stat.h>

@@ -1,4 +1,4 @@
-// `whitted --untrusted`, --timeout and --max-memory (issue 15, findings 9 and 15): for files one
+// `whitted --untrusted`, --timeout and --max-memory (docs/robustness.md): for files one
 // did not write, every limit a clear error.
 #include <signal.h>
 

@@ -49,7 +49,7 @@ void render_corpus(bool lenient) {
         EXPECT_NE(r.output.find(e.message), std::string::npos) << name << ":\n" << r.output;
         EXPECT_FALSE(fs::exists(out)) << name << ": a failed run leaves no image";
     }
-    // 64 files: 3 empty, the `shear` one, and mirror_test.sc without its texture (§9.4 issue 14).
+    // 64 files: 3 empty, the `shear` one, and mirror_test.sc without its texture (§9.4).
     EXPECT_EQ(rendered, 59);
 }
 

@@ -97,7 +97,7 @@ duplicate_mismatch)
     [[ ! -e $out/mpi.png ]] || fail "an image was written from disagreeing ranks" ;;
 ctrl_c)
     # Ctrl-C on mpirun: SIGTERM to every rank; rank 0 writes the partial image atomically, beside
-    # the output (issue 15: a good image already there is never replaced by a partial one).
+    # the output (a good image already there is never replaced by a partial one).
     printf 'good image' >"$out/mpi.png"
     start_slow_job
     kill -INT "$job"

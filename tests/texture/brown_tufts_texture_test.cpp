@@ -95,7 +95,7 @@ TEST(AsciiPpm, DecodesPlainPpm) {
     ASSERT_TRUE(decode_ascii_ppm("P3\n# comment\n2 1\n100\n100 50 0   10 20 #c\n 30\n", img, why)) << why;
     ASSERT_EQ(img.width, 2);
     ASSERT_EQ(img.height, 1);
-    // Kept as the nearest 8-bit values (issue 15): v / 100 · 255 = 255, 127.5, 0, 25.5, 51, 76.5,
+    // Kept as the nearest 8-bit values: v / 100 · 255 = 255, 127.5, 0, 25.5, 51, 76.5,
     // rounded half up to 255, 128, 0, 26, 51, 77.
     EXPECT_EQ(img.rgb, (std::vector<std::uint8_t>{255, 128, 0, 26, 51, 77}));
     EXPECT_NEAR(img.texel(1).x, 0.1f, 0.5f / 255.0f);

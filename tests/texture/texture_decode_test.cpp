@@ -1,4 +1,4 @@
-// Hostile texture files (issue 15, findings 5 and 6): sizes are refused from the header before a
+// Hostile texture files (docs/robustness.md): sizes are refused from the header before a
 // texel is decoded, files shorter than their header says are refused, texels are stored as bytes.
 #include <cstring>
 #include <string>
@@ -95,7 +95,7 @@ TEST(TextureDecode, RefusesFormatsWhittedDoesNotDocument) {
     EXPECT_NE(why.find("unsupported format (GIF)"), std::string::npos) << why;
 }
 
-// Found by fuzz/texture_fuzzer (issue 15's long run): a 312-byte JPEG whose Huffman table made
+// Found by fuzz/texture_fuzzer's long run: a 312-byte JPEG whose Huffman table made
 // Debian's stb_image abort on an assertion in stbi__jpeg_huff_decode, ending the whole process.
 // JPEGs are decoded by libjpeg now: a located error, no abort.
 TEST(TextureDecode, ACorruptJpegIsAnErrorNotAnAbort) {

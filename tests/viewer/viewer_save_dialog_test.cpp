@@ -78,7 +78,7 @@ TEST_F(ViewerE2E, SaveImageAsStartsInTheScenesFolder) {
     EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
 }
 
-// The window goes on showing the render while the Save dialog is open (issue 15, item 14): the
+// The window goes on showing the render while the Save dialog is open: the
 // ready file, written from the window's own timer when the render ends, appears with the dialog
 // still open. (GTK's chooser ran an event loop of its own, in which no timer of ours fired.)
 TEST_F(ViewerE2E, TheWindowKeepsUpdatingWhileTheSaveDialogIsOpen) {
@@ -129,7 +129,7 @@ TEST_F(ViewerE2E, TheWindowKeepsUpdatingWhileTheSaveDialogIsOpen) {
 }
 
 // Saved while a render runs, the image is the one on screen then, and the message says it is
-// partial (issue 15, item 14).
+// partial.
 TEST_F(ViewerE2E, SavingWhileRenderingSaysTheImageIsPartial) {
     Xvfb x;
     std::string why;

@@ -1,4 +1,4 @@
-// The workbench (issue 12), on a real X server: the camera moved on the image, back home, into the
+// The workbench, on a real X server: the camera moved on the image, back home, into the
 // file; the error loop; what is remembered between runs.
 #ifdef WHITTED_VIEWER_PATH
 #include "viewer/viewer_e2e_fixtures.h"
@@ -222,8 +222,8 @@ TEST_F(ViewerWorkbench, F1OpensTheKeyboardShortcutsWindow) {
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
-// A double-click on an error in the messages panel opens the editor at the error's line (issue 12,
-// item 5); the editor here is a script that writes down how it was called.
+// A double-click on an error in the messages panel opens the editor at the error's line;
+// the editor here is a script that writes down how it was called.
 TEST_F(ViewerWorkbench, DoubleClickingAnErrorOpensTheEditorAtItsLine) {
     std::ofstream(scene_, std::ios::trunc) << "camera [ eye 0 0 5 ]\nmastersubgraph root [ trans [ object blob [ ] ] ]\n";
     const std::string editor = dir_ + "/editor.sh", called = dir_ + "/editor-called";
