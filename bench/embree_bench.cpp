@@ -403,7 +403,7 @@ std::unique_ptr<Fixture> make_fixture(SceneData flat, int width, int height, boo
     }
     if (with_point) f->point = build_embree(f->scene.data.instances, Proto::Point);
     f->user = build_embree(f->scene.data.instances, Proto::User);
-    f->data = build_embree(f->scene.data.instances, Proto::Flat);
+    f->flat = build_embree(f->scene.data.instances, Proto::Flat);
     return f;
 }
 
@@ -614,7 +614,7 @@ std::uint64_t trace_primary(Fixture& f, Engine engine, RTCScene es, std::size_t 
 }
 
 EmbreeScene& embree_of(Fixture& f, Proto proto) {
-    return proto == Proto::Point ? *f.point : proto == Proto::User ? *f.user : *f.data;
+    return proto == Proto::Point ? *f.point : proto == Proto::User ? *f.user : *f.flat;
 }
 RTCScene embree_scene(Fixture& f, Proto proto) { return embree_of(f, proto).top; }
 
