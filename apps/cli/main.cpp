@@ -3,42 +3,61 @@
 // image cannot be written, out of memory), 4 --timeout ran out, 130 interrupted.
 #include <unistd.h>
 
+#include <chrono>
 #include <iostream>
 #include <string>
 
+#include "accel/scene.h"
 #include "film/image_io.h"
 #include "inspect_command.h"
 #include "interrupt.h"
 #include "load_report.h"
 #include "progress.h"
 #include "render/load_scene.h"
-#include "render/renderer.h"
 #include "render_options.h"
+#include "session/image_text.h"
+#include "session/session.h"
 
 namespace {
 
 using namespace whitted;
 using namespace whitted::cli;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Time a --time-limit keeps for writing the image: encoding runs at tens of megapixels a second on
+// this project's 2-core machine (bench/RESULTS.md, PNG encoding); a generous reserve, as a budget
+// must not be overrun.
+double write_reserve_seconds(int width, int height) { return 0.05 + 50e-9 * double(width) * double(height); }
+
+ImageText image_text(const Session& session, const RenderOptions& o) {
+    return render_image_text(o.settings, session.samples_done(), session.passes_done(),
+                             int(session.pass_ends().size()));
+}
 
 int run(int argc, char** argv) {
+    const auto start = Clock::now();
     CLI::App app{"whitted: a Whitted-style ray tracer for SceneView/Ray .sc scene files"};
     app.set_version_flag("--version", "whitted 0.1.0");
     app.footer("Exit codes: 0 done, 1 bad usage, 2 bad scene (FILE:LINE:COL: error: ...), 3 I/O failure, "
-               "4 --timeout ran out, 130 interrupted (the part rendered so far is written to NAME.partial.EXT).");
+               "4 --timeout ran out, 130 interrupted (the last whole pass, or the tiles of the first, is written "
+               "to NAME.partial.EXT).");
     RenderOptions o;
-    add_render_options(app, o);
-    add_timeout_option(app, o);
-    std::string inspect;  // whitted only (whitted-mpi has no use for it): not in render_options
+    add_render_options(app, o, Frontend::Cli);
+    std::string inspect;  // whitted only (whitted-mpi has no use for it): not in the settings table
     app.add_option("--inspect", inspect,
                    "Print what made pixel X,Y (column, row; row 0 at the top) with these render settings: its "
                    "object and the scene lines above it, material, lights, shadows, reflected and refracted rays, "
                    "and its colour in parts. Renders nothing else, writes no image")
         ->type_name("X,Y");
-    if (int code = parse_render_options(app, o, argc, argv, "whitted"); code != kExitOk) return code < 0 ? 0 : code;
+    if (int code = parse_render_options(app, o, argc, argv, "whitted", Frontend::Cli); code != kExitOk)
+        return code < 0 ? 0 : code;
+    const RenderSettings& s = o.settings;
     std::optional<PixelArg> pixel;
     if (app.get_option("--inspect")->count() > 0) {
         std::string problem;
-        pixel = parse_pixel_arg(inspect, o.width, o.height, problem);
+        pixel = parse_pixel_arg(inspect, s.width, s.height, problem);
         if (!pixel) {
             std::cerr << "whitted: error: " << problem << "\n";
             return kExitUsage;
@@ -51,40 +70,88 @@ int run(int argc, char** argv) {
     }
 
     install_interrupt_handler();  // from here on Ctrl-C stops the load or the render
-    const Deadline deadline(o.timeout);
+    const Deadline deadline(timeout_seconds(s));
+    // --time-limit: a deadline for the load and the passes, the write's time kept in reserve.
+    const double budget = s.time_limit > 0 ? s.time_limit - write_reserve_seconds(s.width, s.height) : 0.0;
+    const Deadline budget_deadline(s.time_limit > 0 ? std::max(1e-3, budget - seconds_since(start)) : 0.0);
+    auto limit_ran_out = [&]() -> const char* {
+        return deadline.timed_out() ? "--timeout" : budget_deadline.timed_out() ? "--time-limit" : nullptr;
+    };
     LoadResult loaded = load_scene(o.scene_path, load_options(o, &interrupt_flag()));
-    if (int code = report_load(loaded, o, "whitted", deadline.timed_out()); code != kExitOk) return code;
+    if (int code = report_load(loaded, o, "whitted", limit_ran_out()); code != kExitOk) return code;
 
     RenderJob job = render_job(o, &interrupt_flag());
     if (pixel) return print_inspection(*loaded.scene, job, *pixel, o.scene_path);
-    ProgressLine progress(job.tile_count(), !o.quiet && isatty(STDERR_FILENO));
-    job.on_tile = [&](const Tile&) { progress.tile_done(); };
 
-    const auto integrator = make_integrator(*loaded.scene, job.camera_for(*loaded.scene), job.integrator);
-    Film film(o.width, o.height);
-    RenderStats rs = render(*integrator, job, film);
+    Session session(loaded.scene, job);
+    const int passes = int(session.pass_ends().size());
+    ProgressLine progress(job.tile_count() * passes, !o.quiet && isatty(STDERR_FILENO));
+    RenderStats last;
+    bool budget_reached = false;
+    while (!session.done()) {
+        // A pass that the forecast says would not end within the budget is not begun.
+        if (s.time_limit > 0 && session.passes_done() > 0 &&
+            seconds_since(start) + session.forecast_next_pass_seconds() > budget) {
+            budget_reached = true;
+            break;
+        }
+        last = session.render_pass([&](const Tile&, const Film&) { progress.tile_done(); }).render;
+        if (last.cancelled) break;
+    }
     progress.finish();
+    const bool interrupted = last.cancelled && !budget_deadline.timed_out();
+    // The budget ran out inside a pass: the last whole one stands, as if the forecast had said so.
+    budget_reached = budget_reached || (last.cancelled && budget_deadline.timed_out() && !deadline.timed_out());
+    const bool complete = !interrupted && session.passes_done() > 0 && (session.done() || budget_reached);
+
+    RenderStats total = last;
+    total.rays = session.rays();
+    total.seconds = session.seconds();
+    if (o.stats) print_stats(loaded.stats, total, session.samples_done(), session.passes_done());
+    if (!complete && session.passes_done() == 0 && last.tiles_done == 0) {
+        std::cerr << "whitted: " << (limit_ran_out() ? "error: the time limit ran out" : "interrupted")
+                  << " before any tile was rendered: nothing written\n";
+        return limit_ran_out() ? kExitTimeout : kExitInterrupted;
+    }
 
     // An interrupted render never replaces the output: a good image from an earlier run may be
     // there (a batch timeout's SIGTERM must not destroy it). Its part goes beside it.
-    const std::string written = rs.cancelled ? partial_image_path(o.output) : o.output;
+    const std::string written = complete ? o.output : partial_image_path(o.output);
     // .exr and .pfm keep the linear values; the 8-bit formats get them clamped (§7).
-    const std::string err = is_linear_output(written) ? write_linear_image(film.to_linear(), written)
-                                                      : write_image(film.to_image(), written);
+    std::string err;
+    if (is_linear_output(written)) {
+        LinearImage image = session.film().to_linear();
+        image.text = image_text(session, o);
+        err = write_linear_image(image, written);
+    } else {
+        Image image = session.film().to_image();
+        image.text = image_text(session, o);
+        err = write_image(image, written);
+    }
     if (!err.empty()) {
         std::cerr << "whitted: error: " << err << "\n";
         return kExitIo;
     }
-    if (o.stats) print_stats(loaded.stats, rs, job.sampling.samples_per_pixel());
-    if (rs.cancelled && deadline.timed_out()) {
-        std::cerr << "whitted: error: the time limit of " << o.timeout << " s (--timeout) ran out: wrote the "
-                  << rs.tiles_done << " of " << rs.tiles_total << " tiles rendered so far to " << written << " ("
-                  << o.output << " was not written)\n";
+    const std::string reached = session.passes_done() > 0
+                                    ? "the " + std::to_string(session.samples_done()) + " samples per pixel of " +
+                                          std::to_string(session.passes_done()) + " whole passes"
+                                    : "the " + std::to_string(last.tiles_done) + " of " +
+                                          std::to_string(last.tiles_total) + " tiles of the first pass";
+    if (complete && budget_reached) {
+        if (!o.quiet)
+            std::cerr << "wrote " << o.output << ": " << reached << " fitted in the time limit of " << s.time_limit
+                      << " s (" << job.sampling.samples_per_pixel() << " asked for)\n";
+        return kExitOk;
+    }
+    if (!complete && limit_ran_out()) {
+        std::cerr << "whitted: error: the time limit of "
+                  << (deadline.timed_out() ? timeout_seconds(s) : s.time_limit) << " s (" << limit_ran_out()
+                  << ") ran out: wrote " << reached << " to " << written << " (" << o.output << " was not written)\n";
         return kExitTimeout;
     }
-    if (rs.cancelled) {
-        std::cerr << "whitted: interrupted: wrote the " << rs.tiles_done << " of " << rs.tiles_total
-                  << " tiles rendered so far to " << written << " (" << o.output << " was not written)\n";
+    if (!complete) {
+        std::cerr << "whitted: interrupted: wrote " << reached << " to " << written << " (" << o.output
+                  << " was not written)\n";
         return kExitInterrupted;
     }
     if (!o.quiet) std::cerr << "wrote " << o.output << "\n";

@@ -13,18 +13,19 @@ constexpr int kMaxWarningsShown = 50;
 
 }  // namespace
 
-int report_load(const LoadResult& loaded, const RenderOptions& o, const char* program, bool timed_out) {
+int report_load(const LoadResult& loaded, const RenderOptions& o, const char* program, const char* limit) {
     int warnings = 0;
     std::vector<Diagnostic> diagnostics = loaded.diagnostics;
-    if (o.mode_name == "path")  // warnings that hold only there (§9.2)
+    if (o.settings.mode == "path")  // warnings that hold only there (§9.2)
         diagnostics.insert(diagnostics.end(), loaded.path_warnings.begin(), loaded.path_warnings.end());
     for (const Diagnostic& d : diagnostics)
         if (d.severity == Severity::Error || ++warnings <= kMaxWarningsShown) std::cerr << d.str() << "\n";
     if (warnings > kMaxWarningsShown)
         std::cerr << program << ": " << warnings - kMaxWarningsShown << " more warnings not shown\n";
-    if (loaded.cancelled && timed_out) {
-        std::cerr << program << ": error: the time limit of " << o.timeout << " s (--timeout) ran out while loading "
-                  << "the scene: nothing written\n";
+    if (loaded.cancelled && limit) {
+        const double seconds = std::string(limit) == "--time-limit" ? o.settings.time_limit : timeout_seconds(o.settings);
+        std::cerr << program << ": error: the time limit of " << seconds << " s (" << limit
+                  << ") ran out while loading the scene: nothing written\n";
         return kExitTimeout;
     }
     if (loaded.cancelled) {
@@ -32,7 +33,7 @@ int report_load(const LoadResult& loaded, const RenderOptions& o, const char* pr
         return kExitInterrupted;
     }
     if (!loaded.ok()) {
-        if (!loaded.missing_textures.empty() && o.missing == "error")
+        if (!loaded.missing_textures.empty() && o.settings.missing_textures != "checker")
             std::cerr << program << ": use --texture-path DIR to add a place to look, or --missing-textures=checker "
                                     "to render without them\n";
         return loaded.unreadable ? kExitIo : kExitScene;
@@ -40,14 +41,14 @@ int report_load(const LoadResult& loaded, const RenderOptions& o, const char* pr
     return kExitOk;
 }
 
-void print_stats(const LoadStats& ls, const RenderStats& rs, int samples_per_pixel) {
+void print_stats(const LoadStats& ls, const RenderStats& rs, int samples_per_pixel, int passes) {
     std::fprintf(stderr,
                  "dialect %s\n"
-                 "objects %zu, lights %zu, textures %zu; %d samples per pixel\n"
+                 "objects %zu, lights %zu, textures %zu; %d samples per pixel in %d passes\n"
                  "parse %.3fs, flatten %.3fs, textures %.3fs, build %.3fs, render %.3fs (%d threads)\n"
                  "rays: camera %llu, reflected %llu, refracted %llu, shadow %llu; %.2f Mrays/s\n"
                  "samples rejected (not finite, counted as black): %llu\n",
-                 dialect_name(ls.dialect), ls.objects, ls.lights, ls.textures, samples_per_pixel, ls.parse_seconds,
+                 dialect_name(ls.dialect), ls.objects, ls.lights, ls.textures, samples_per_pixel, passes, ls.parse_seconds,
                  ls.flatten_seconds, ls.texture_seconds, ls.build_seconds, rs.seconds, rs.threads,
                  (unsigned long long)rs.rays.camera, (unsigned long long)rs.rays.reflected,
                  (unsigned long long)rs.rays.refracted, (unsigned long long)rs.rays.shadow,

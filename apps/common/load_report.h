@@ -9,9 +9,10 @@ namespace whitted::cli {
 
 // Prints the load's warnings and errors to stderr. Returns kExitOk when there is a scene to
 // render, else the code to exit with (interrupted, --timeout ran out, bad scene, unreadable file).
-int report_load(const LoadResult& loaded, const RenderOptions& o, const char* program, bool timed_out = false);
+// `limit` names the time limit that ran out, if one did ("--timeout", "--time-limit"; null: none).
+int report_load(const LoadResult& loaded, const RenderOptions& o, const char* program, const char* limit = nullptr);
 
-// The --stats lines of a load and a render.
-void print_stats(const LoadStats& ls, const RenderStats& rs, int samples_per_pixel);
+// The --stats lines of a load and a render (samples per pixel reached, in how many passes).
+void print_stats(const LoadStats& ls, const RenderStats& rs, int samples_per_pixel, int passes = 1);
 
 }  // namespace whitted::cli

@@ -7,9 +7,8 @@
 #include <iostream>
 
 #include "film/image_io.h"
-#include "integrator/render_mode.h"
-#include "run_limits.h"
 #include "base/read_file.h"
+#include "session/run_limits.h"
 
 namespace whitted::cli {
 namespace {
@@ -33,7 +32,7 @@ bool same_file(const std::string& a, const std::string& b) {
 // CLI::Range lets NaN through (every comparison with it is false).
 const CLI::Validator finite_number(
     [](std::string& s) {
-        return std::isfinite(std::strtof(s.c_str(), nullptr)) ? std::string() : "not a finite number: " + s;
+        return std::isfinite(std::strtod(s.c_str(), nullptr)) ? std::string() : "not a finite number: " + s;
     },
     "FINITE");
 
@@ -43,104 +42,84 @@ const CLI::Validator memory_size(
 
 }  // namespace
 
-void add_render_options(CLI::App& app, RenderOptions& o) {
+CLI::Option* add_setting_option(CLI::App& app, RenderSettings& settings, const Setting& setting) {
+    const std::string flag = "--" + std::string(setting.name);
+    return std::visit(
+        [&](auto member) -> CLI::Option* {
+            using T = std::remove_cvref_t<decltype(settings.*member)>;
+            auto& value = settings.*member;
+            if constexpr (std::is_same_v<T, bool>) {
+                return app.add_flag(flag, value, setting.help);
+            } else if constexpr (std::is_same_v<T, std::vector<std::string>>) {
+                // One directory per option (repeat it for more): a list would swallow the scene after it.
+                return app.add_option(flag, value, setting.help)->allow_extra_args(false)->default_str("");
+            } else if constexpr (std::is_same_v<T, std::string>) {
+                CLI::Option* o = app.add_option(flag, value, setting.help);
+                if (!setting.choices.empty()) o->check(CLI::IsMember(std::vector<std::string>(setting.choices.begin(), setting.choices.end())));
+                if (std::string(setting.name) == "max-memory") o->check(memory_size);
+                return o;
+            } else {
+                CLI::Option* o = app.add_option(flag, value, setting.help)->check(CLI::Range(T(setting.min), T(setting.max)));
+                if constexpr (std::is_floating_point_v<T>) o->check(finite_number);
+                return o;
+            }
+        },
+        setting.field);
+}
+
+void add_render_options(CLI::App& app, RenderOptions& o, Frontend) {
     app.option_defaults()->always_capture_default();
-    app.add_option("scene", o.scene_path, "Scene file (.sc); without one, renders the bundled showcase");
+    app.add_option("scene", o.scene_path,
+                   "Scene file (.sc); without one, renders the bundled showcase");
     app.add_option("-o,--output", o.output,
                    "Output image: .png (default), .bmp, .ppm, .jpg; .exr or .pfm keep linear, unclamped values");
-    app.add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, 32768));
-    app.add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, 32768));
-    app.add_option("--max-depth", o.max_depth,
-                   "Recursion limit for reflection/refraction (camera ray = 0); in path mode the bounces of a path "
-                   "(default 64 there)")
-        ->check(CLI::Range(0, 1000));
-    app.add_option("--aa", o.aa, "Anti-aliasing: N x N rays per pixel, averaged (1 = one ray through the centre)")
-        ->check(CLI::Range(1, Sampler::kMaxAa));
-    app.add_option("--spp", o.spp,
-                   "Samples per pixel (per sub-pixel with --aa N: N x N x spp in all) for soft shadows, depth of "
-                   "field and gloss; 1 = the pixel, lens and light centres (default 64 in path mode)")
-        ->check(CLI::Range(1, Sampler::kMaxSpp));
-    app.add_option("--aa-threshold", o.aa_threshold,
-                   "Adaptive anti-aliasing: supersample only pixels whose colour differs from a neighbour's by more "
-                   "than this (0-1, per channel); 0 = every pixel")
-        ->check(CLI::Range(0.0f, 1.0f))
-        ->check(finite_number);
-    app.add_option("--mode", o.mode_name,
-                   "Render mode: whitted (the lab's model), path (physically based path tracing), raycast, normals, "
-                   "depth")
-        ->check(CLI::IsMember({"whitted", "path", "raycast", "normals", "depth"}));
-    app.add_option("--time", o.time,
-                   "Scene time t: 'velocity x y z' moves by t·(x, y, z), 'angularrate ax ay az r' turns by r·t "
-                   "degrees (0 = the still image)")
-        ->check(finite_number);
-    app.add_option("--threads", o.threads, "Worker threads (0 = all hardware threads)")->check(CLI::Range(0, 1024));
-    // One directory per --texture-path (repeat it for more): a list would swallow the scene after it.
-    app.add_option("--texture-path", o.texture_dirs, "Extra directory to look for textures in (repeat for more)")
-        ->allow_extra_args(false)
-        ->default_str("");
-    app.add_option("--missing-textures", o.missing, "What to do with a texture that cannot be loaded")
-        ->check(CLI::IsMember({"error", "checker"}));
-    app.add_option("--max-memory", o.max_memory_text,
-                   "Memory the image and scene may need, estimated before anything is built: a size such as 512M "
-                   "or 4G (default: three quarters of this machine's RAM)")
-        ->check(memory_size);
-    app.add_flag("--untrusted", o.untrusted,
-                 "For scene files you did not write: textures only from the scene's folder and --texture-path, and "
-                 "lower limits on file sizes, objects, textures, memory (1G) and time (60 s) (see the README)");
-    app.add_flag("--lenient", o.lenient, "Skip unknown keywords and object types with a warning instead of failing");
+    for (const Setting& setting : render_settings_table()) add_setting_option(app, o.settings, setting);
     app.add_flag("-q,--quiet", o.quiet, "No progress line");
     app.add_flag("--stats", o.stats, "Print timings and ray counts");
 }
 
-void add_timeout_option(CLI::App& app, RenderOptions& o) {
-    app.add_option("--timeout", o.timeout,
-                   "Stop after this many seconds (load and render), keeping the part rendered as NAME.partial.EXT; "
-                   "0 = never")
-        ->check(CLI::Range(0.0, 1e7))
-        ->check(finite_number);
-}
-
-std::string finish_render_options(RenderOptions& o, bool timeout_given) {
-    if (o.aa_threshold > 0.0f && o.spp > 1)
-        return "--aa-threshold compares the colours of pixel centres, which --spp > 1 does not take; use "
-               "--aa-threshold with --spp 1, or --spp alone";
-    o.is_showcase = o.scene_path.empty();
-    if (o.is_showcase) o.scene_path = bundled_showcase();
-    if (o.output.empty()) o.output = default_output(o.scene_path, o.is_showcase);
-    // An unknown format or a size it cannot hold, before the render.
-    if (std::string problem = output_problem(o.width, o.height, o.output); !problem.empty()) return problem;
-    if (same_file(o.output, o.scene_path))
-        return "the output '" + o.output + "' is the scene file itself; name another with -o";
-    using Untrusted = UntrustedLimits;
-    if (o.untrusted && (o.width > Untrusted::kImageSide || o.height > Untrusted::kImageSide))
-        return "--untrusted renders images of at most " + std::to_string(Untrusted::kImageSide) + "x" +
-               std::to_string(Untrusted::kImageSide) + " pixels (" + std::to_string(o.width) + "x" +
-               std::to_string(o.height) + " asked for)";
-    if (o.untrusted && !timeout_given) o.timeout = Untrusted::kSeconds;
-    o.max_memory = !o.max_memory_text.empty() ? *parse_memory_size(o.max_memory_text)
-                   : o.untrusted              ? Untrusted::kMemory
-                                              : default_max_memory();
-    o.for_image = image_memory(o.width, o.height, o.output);
-    if (o.for_image > o.max_memory)
-        return "a " + std::to_string(o.width) + "x" + std::to_string(o.height) + " image needs about " +
-               describe_bytes(o.for_image) + " of memory to render and write, more than the limit of " +
-               describe_bytes(o.max_memory) + " (--max-memory)";
+std::string collect_given(CLI::App& app, RenderSettings& settings, Frontend frontend, const char* program) {
+    (void)program;
+    for (const Setting& setting : render_settings_table()) {
+        const CLI::Option* option = app.get_option_no_throw("--" + std::string(setting.name));
+        if (!option || option->count() == 0) continue;
+        if (setting.refused(frontend))
+            return "--" + std::string(setting.name) + " is not for this program: " + setting.refusal;
+        settings.given.insert(setting.name);
+    }
     return "";
 }
 
-int parse_render_options(CLI::App& app, RenderOptions& o, int argc, char** argv, const char* program) {
+std::string finish_render_options(CLI::App& app, RenderOptions& o, Frontend frontend) {
+    if (std::string refused = collect_given(app, o.settings, frontend, ""); !refused.empty()) return refused;
+    apply_mode_defaults(o.settings);
+    if (std::string problem = validate(o.settings); !problem.empty()) return problem;
+    o.is_showcase = o.scene_path.empty();
+    if (o.is_showcase) o.scene_path = bundled_showcase();
+    if (o.output.empty()) o.output = default_output(o.scene_path, o.is_showcase);
+    const RenderSettings& s = o.settings;
+    // An unknown format or a size it cannot hold, before the render.
+    if (std::string problem = output_problem(s.width, s.height, o.output); !problem.empty()) return problem;
+    if (same_file(o.output, o.scene_path))
+        return "the output '" + o.output + "' is the scene file itself; name another with -o";
+    const std::size_t limit = memory_limit(s);
+    o.for_image = image_memory(s.width, s.height, o.output, make_render_job(s).sampling);
+    if (o.for_image > limit)
+        return "a " + std::to_string(s.width) + "x" + std::to_string(s.height) + " image needs about " +
+               describe_bytes(o.for_image) + " of memory to render and write, more than the limit of " +
+               describe_bytes(limit) + " (--max-memory)";
+    return "";
+}
+
+int parse_render_options(CLI::App& app, RenderOptions& o, int argc, char** argv, const char* program,
+                         Frontend frontend) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         int code = app.exit(e);
         return code == 0 ? -1 : kExitUsage;
     }
-    if (o.mode_name == "path") {  // §9.2: a path tracer's defaults, where the user gave none
-        if (app.get_option("--spp")->count() == 0) o.spp = 64;
-        if (app.get_option("--max-depth")->count() == 0) o.max_depth = 64;
-    }
-    const CLI::Option* timeout = app.get_option_no_throw("--timeout");
-    if (std::string problem = finish_render_options(o, timeout && timeout->count() > 0); !problem.empty()) {
+    if (std::string problem = finish_render_options(app, o, frontend); !problem.empty()) {
         std::cerr << program << ": error: " << problem << "\n";
         return kExitUsage;
     }
@@ -148,25 +127,13 @@ int parse_render_options(CLI::App& app, RenderOptions& o, int argc, char** argv,
 }
 
 LoadOptions load_options(const RenderOptions& o, const std::atomic<bool>* cancel) {
-    LoadOptions lo;
+    LoadOptions lo = make_load_options(o.settings, o.for_image);
     lo.cancel = cancel;
-    lo.lenient = o.lenient;
-    lo.threads = o.threads;  // --threads 1 means one thread for the build too
-    lo.time = o.time;
-    lo.textures.search_dirs = o.texture_dirs;
-    lo.textures.missing = o.missing == "checker" ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
-    if (o.max_memory > 0) lo.max_memory = o.max_memory - std::min(o.max_memory, o.for_image);
-    if (o.untrusted) apply_untrusted(lo);
     return lo;
 }
 
 RenderJob render_job(const RenderOptions& o, const std::atomic<bool>* cancel) {
-    RenderJob job;
-    job.width = o.width;
-    job.height = o.height;
-    job.integrator = {*parse_render_mode(o.mode_name), o.max_depth};
-    job.sampling = {o.aa, o.spp, o.aa_threshold};
-    job.threads = o.threads;
+    RenderJob job = make_render_job(o.settings);
     job.cancel = cancel;
     return job;
 }

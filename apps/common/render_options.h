@@ -1,6 +1,7 @@
 #pragma once
-// The options every renderer frontend that turns a scene file into an image file takes (whitted,
-// whitted-mpi): declared once on a CLI11 app, checked once, turned into the load and render settings.
+// The command line of the renderers that turn a scene file into an image file (whitted,
+// whitted-mpi): the render settings of the one table (session/render_settings.h), bound to CLI11,
+// and what only these front ends take (the scene, the output, --quiet, --stats).
 #include <atomic>
 #include <cstddef>
 #include <string>
@@ -10,37 +11,31 @@
 
 #include "render/load_scene.h"
 #include "render/render_job.h"
+#include "session/render_settings.h"
 
 namespace whitted::cli {
 
 // Exit codes shared by the command-line renderers.
 constexpr int kExitOk = 0, kExitUsage = 1, kExitScene = 2, kExitIo = 3, kExitInterrupted = 130;
-constexpr int kExitTimeout = 4;  // whitted's --timeout ran out (whitted-mpi has no --timeout; its 4 is another)
+constexpr int kExitTimeout = 4;  // --timeout ran out (whitted-mpi: also two ranks disagreeing on a tile)
 
 struct RenderOptions {
-    std::string scene_path, output, mode_name = "whitted", missing = "error";
-    int width = 640, height = 480, max_depth = 5, aa = 1, spp = 1, threads = 0;
-    float aa_threshold = 0.0f, time = 0.0f;
-    bool lenient = false, quiet = false, stats = false;
-    std::vector<std::string> texture_dirs;
+    RenderSettings settings;
+    std::string scene_path, output;
+    bool quiet = false, stats = false;
     bool is_showcase = false;  // no scene given: the bundled showcase
-    // Limits (README, "Rendering files from others"): --untrusted, --max-memory SIZE, --timeout S.
-    bool untrusted = false;
-    std::string max_memory_text;
-    double timeout = 0;  // seconds; 0 = none (--untrusted: 60 unless given)
-    std::size_t max_memory = 0, for_image = 0;  // set by finish_render_options: the limit, the image's share
+    std::size_t for_image = 0;  // set by finish_render_options: the memory the image needs
 };
 
-// Declares the options (and the positional scene) on `app`, writing into `o`.
-void add_render_options(CLI::App& app, RenderOptions& o);
-// --timeout S (whitted only: an MPI job's time limit is the batch system's, whose SIGTERM keeps
-// the part rendered as any interrupt does).
-void add_timeout_option(CLI::App& app, RenderOptions& o);
+// Declares every setting of the table on `app` for the front end `frontend` (those it refuses are
+// accepted by the parser and refused after it, with the table's reason), and the positional scene,
+// -o, -q and --stats.
+void add_render_options(CLI::App& app, RenderOptions& o, Frontend frontend);
 
-// After parsing: fills the defaults that depend on other options (showcase, output name, the
-// limits of --untrusted and --max-memory) and checks what CLI11 cannot, including the memory the
-// image needs. Returns "" or the message of a usage error (print it, exit 1).
-std::string finish_render_options(RenderOptions& o, bool timeout_given = false);
+// Marks the settings given on the command line; refuses those the front end does not take; applies
+// the mode's defaults; validates; fills the output name and checks the image's memory. Returns ""
+// or the message of a usage error (print it, exit 1).
+std::string finish_render_options(CLI::App& app, RenderOptions& o, Frontend frontend);
 
 // The load's settings, with the memory left besides the image and the limits of --untrusted.
 LoadOptions load_options(const RenderOptions& o, const std::atomic<bool>* cancel);
@@ -50,6 +45,14 @@ RenderJob render_job(const RenderOptions& o, const std::atomic<bool>* cancel);
 
 // Parses argv into `o`: kExitOk to go on, or the code to exit with (--help and --version give
 // -1 after printing: exit 0).
-int parse_render_options(CLI::App& app, RenderOptions& o, int argc, char** argv, const char* program);
+int parse_render_options(CLI::App& app, RenderOptions& o, int argc, char** argv, const char* program,
+                         Frontend frontend);
+
+// Binds one setting of the table to `app`, writing into `settings` (also the viewer's command line).
+CLI::Option* add_setting_option(CLI::App& app, RenderSettings& settings, const Setting& setting);
+
+// After app.parse: the names of the table's settings given on the command line into settings.given,
+// and "" or why the front end refuses one of them.
+std::string collect_given(CLI::App& app, RenderSettings& settings, Frontend frontend, const char* program);
 
 }  // namespace whitted::cli

@@ -55,12 +55,9 @@ void add_mpi_options(CLI::App& app, MpiOptions& m) {
     app.add_option("--test-corrupt-rank", m.knobs.corrupt_rank)->group("");
 }
 
-// The options that change pixels (and the tile grid): a checkpoint is for these only.
+// Every setting that changes pixels (the one table's) and the tile grid: a checkpoint is for these only.
 std::string pixel_options(const RenderOptions& o, const MpiOptions& m) {
-    return std::to_string(o.width) + "x" + std::to_string(o.height) + " " + o.mode_name + " depth " +
-           std::to_string(o.max_depth) + " aa " + std::to_string(o.aa) + " spp " + std::to_string(o.spp) +
-           " threshold " + std::to_string(o.aa_threshold) + " tile " + std::to_string(m.tile_size) + " " + o.missing +
-           (o.lenient ? " lenient" : "");
+    return pixel_key(o.settings) + "tile=" + std::to_string(m.tile_size) + ";";
 }
 
 int run(int argc, char** argv, int rank, int ranks) {
@@ -72,15 +69,24 @@ int run(int argc, char** argv, int rank, int ranks) {
                "interrupted (the part rendered so far is written).");
     RenderOptions o;
     MpiOptions m;
-    add_render_options(app, o);
+    add_render_options(app, o, Frontend::Mpi);
     add_mpi_options(app, m);
+    // whitted's own: taken, so that it is refused with a reason rather than a parser's complaint.
+    std::string inspect;
+    app.add_option("--inspect", inspect, "(whitted only)")->group("");
     // Every rank parses the same arguments; only rank 0 speaks.
     if (rank != 0) {
         std::cerr.setstate(std::ios::failbit);
         std::cout.setstate(std::ios::failbit);
     }
-    if (int code = parse_render_options(app, o, argc, argv, "whitted-mpi"); code != kExitOk) return code < 0 ? 0 : code;
+    if (int code = parse_render_options(app, o, argc, argv, "whitted-mpi", Frontend::Mpi); code != kExitOk)
+        return code < 0 ? 0 : code;
     if (rank != 0) std::cerr.clear();
+    if (app.get_option("--inspect")->count() > 0) {
+        std::cerr << "whitted-mpi: error: --inspect is not for this program: it prints what made one pixel and "
+                     "renders no image; run `whitted SCENE --inspect X,Y` with the same options\n";
+        return kExitUsage;
+    }
     if (!same_binary_and_options(argc, argv, rank, ranks)) return kExitUsage;
     if (m.verify && ranks < 2) {
         std::cerr << "whitted-mpi: error: --verify needs at least two ranks (mpirun -np 2 or more)\n";
@@ -88,7 +94,9 @@ int run(int argc, char** argv, int rank, int ranks) {
     }
 
     install_interrupt_handler();
-    SharedScene shared = share_scene(o, rank, &interrupt_flag());
+    // --timeout (and --untrusted's 60 s): rank 0 stops the job as a first Ctrl-C would.
+    const Deadline deadline(rank == 0 ? timeout_seconds(o.settings) : 0.0);
+    SharedScene shared = share_scene(o, rank, &interrupt_flag(), deadline);
     if (shared.code != 0) return shared.code;
 
     RankSetup s;
@@ -96,15 +104,16 @@ int run(int argc, char** argv, int rank, int ranks) {
                                             render_job(o, nullptr).integrator);
     s.integrator = integrator.get();
     s.job = render_job(o, nullptr);
-    s.grid = {o.width, o.height, m.tile_size};
+    s.grid = {o.settings.width, o.settings.height, m.tile_size};
     s.rank = rank;
     s.ranks = ranks;
-    s.threads = worker_count(o.threads, std::size_t(1) << 20);
+    s.threads = worker_count(o.settings.threads, std::size_t(1) << 20);
     s.job.threads = s.threads;
     s.knobs = m.knobs;
     s.interrupted = &interrupt_flag();
     if (rank != 0) return run_worker(s);
     s.options = &o;
+    s.deadline = &deadline;
     s.job_hash = fnv1a(pixel_options(o, m), shared.hash);
     s.schedule_seed = m.schedule_seed;
     s.verify = m.verify;

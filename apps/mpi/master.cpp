@@ -9,6 +9,8 @@
 #include <thread>
 
 #include "checkpoint.h"
+#include "session/image_text.h"
+#include "session/session.h"
 #include "film/image_io.h"
 #include "progress.h"
 #include "protocol.h"
@@ -162,6 +164,21 @@ struct Master {
     bool all_bye() const { return std::find(bye.begin(), bye.end(), false) == bye.end(); }
 
     int run();
+    // The film to `path` with whitted's words about it: every sample of the schedule's passes when
+    // every tile is in (a partial image: its tiles have them, the others none).
+    std::string write_film(const std::string& path) const {
+        const int passes = int(sample_passes(s.job.sampling).size());
+        const ImageText text = render_image_text(s.options->settings, s.job.sampling.samples_per_pixel(),
+                                                 schedule.all_done() ? passes : 0, passes);
+        if (is_linear_output(path)) {
+            LinearImage image = film.to_linear();
+            image.text = text;
+            return write_linear_image(image, path);
+        }
+        Image image = film.to_image();
+        image.text = text;
+        return write_image(image, path);
+    }
     void print_stats(double wall, double local_busy) const;
 };
 
@@ -228,11 +245,14 @@ int Master::run() {
     if (!mismatch.empty()) {
         std::cerr << "whitted-mpi: error: " << mismatch << "; nothing written\n";
         code = kExitMismatch;
-    } else if (std::string err = is_linear_output(written) ? write_linear_image(film.to_linear(), written)
-                                                           : write_image(film.to_image(), written);
-               !err.empty()) {
+    } else if (std::string err = write_film(written); !err.empty()) {
         std::cerr << "whitted-mpi: error: " << err << "\n";
         code = cli::kExitIo;
+    } else if (!schedule.all_done() && s.deadline && s.deadline->timed_out()) {
+        std::cerr << "whitted-mpi: error: the time limit of " << timeout_seconds(s.options->settings)
+                  << " s (--timeout) ran out: wrote the " << schedule.done_count() << " of " << schedule.tile_count()
+                  << " tiles rendered so far to " << written << " (" << s.options->output << " was not written)\n";
+        code = cli::kExitTimeout;
     } else if (!schedule.all_done()) {
         std::cerr << "whitted-mpi: interrupted: wrote the " << schedule.done_count() << " of " << schedule.tile_count()
                   << " tiles rendered so far to " << written << " (" << s.options->output << " was not written)\n";

@@ -5,12 +5,14 @@
 #include <cstdint>
 #include <string>
 
+#include "interrupt.h"
 #include "render_options.h"
 #include "tiles.h"
 
 namespace whitted::mpi {
 
-// Exit code when two ranks render the same tile to different bytes (the ranks are not alike).
+// Exit code when two ranks render the same tile to different bytes (the ranks are not alike); the
+// same as a time limit's (cli::kExitTimeout): the message says which.
 constexpr int kExitMismatch = 4;
 
 struct RankSetup {
@@ -22,6 +24,7 @@ struct RankSetup {
     const std::atomic<bool>* interrupted = nullptr;
     // Rank 0 only:
     const cli::RenderOptions* options = nullptr;
+    const cli::Deadline* deadline = nullptr;  // --timeout
     std::uint64_t job_hash = 0;  // for the checkpoint
     std::uint64_t schedule_seed = 0;
     bool verify = false;  // every tile rendered by two ranks and compared

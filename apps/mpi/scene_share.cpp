@@ -103,7 +103,8 @@ bool same_binary_and_options(int argc, char** argv, int rank, int ranks) {
     return ok == 1;
 }
 
-SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic<bool>* cancel) {
+SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic<bool>* cancel,
+                        const cli::Deadline& deadline) {
     SharedScene s;
     LoadOptions lo = cli::load_options(o, cancel);
     std::vector<char> payload;
@@ -119,7 +120,7 @@ SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic
             s.code = cli::kExitIo;
         } else {
             s.loaded = !file.ok() ? load_scene(o.scene_path, lo) : load_scene_text(file.bytes, o.scene_path, lo);
-            s.code = cli::report_load(s.loaded, o, "whitted-mpi");
+            s.code = cli::report_load(s.loaded, o, "whitted-mpi", deadline.timed_out() ? "--timeout" : nullptr);
         }
         if (s.code == 0) payload = pack(file.bytes, s.loaded.texture_files);
         s.loaded.texture_files.clear();

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "render/load_scene.h"
+#include "interrupt.h"
 #include "render_options.h"
 
 namespace whitted::mpi {
@@ -22,8 +23,9 @@ struct SharedScene {
     double broadcast_seconds = 0, load_seconds = 0;
 };
 
-// Collective: rank 0 loads o.scene_path (reporting its diagnostics once), the others build
-// the scene from the broadcast bytes.
-SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic<bool>* cancel);
+// Collective: rank 0 loads o.scene_path (reporting its diagnostics once, and that `deadline` ran
+// out if it did), the others build the scene from the broadcast bytes.
+SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic<bool>* cancel,
+                        const cli::Deadline& deadline);
 
 }  // namespace whitted::mpi

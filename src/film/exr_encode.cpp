@@ -8,6 +8,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
 
 namespace whitted {
 namespace {
@@ -35,6 +36,7 @@ bool encode_exr(const LinearImage& image, std::FILE* file) {
         FileStream stream(file);
         Imf::Header header(image.width, image.height);
         for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
+        for (const auto& [key, value] : image.text) header.insert(key, Imf::StringAttribute(value));
         Imf::OutputFile out(stream, header);
         Imf::FrameBuffer fb;
         char* base = const_cast<char*>(reinterpret_cast<const char*>(image.rgb.data()));

@@ -1,15 +1,22 @@
 #pragma once
 // An 8-bit RGB image, row 0 at the top: what the renderer produces and every frontend shows.
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 namespace whitted {
 
+// Words about an image that go into its file: PNG tEXt chunks, EXR string attributes (the other
+// formats have no place for them). Keys as PNG keywords: 1 to 79 printable Latin-1 characters.
+using ImageText = std::vector<std::pair<std::string, std::string>>;
+
 struct Image {
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgb;  // width·height·3 bytes, row-major
+    ImageText text;
 
     Image() = default;
     Image(int w, int h) : width(w), height(h), rgb(std::size_t(w) * h * 3, 0) {}
@@ -24,6 +31,7 @@ struct Image {
 struct LinearImage {
     int width = 0, height = 0;
     std::vector<glm::vec3> rgb;  // width·height pixels, row-major
+    ImageText text;
 };
 
 // c clamped to [0, 1], NaN mapped to 0: what an 8-bit image can show.

@@ -144,7 +144,8 @@ std::string write_atomically(const std::string& path, Encode&& encode) {
 }
 
 LinearImage to_linear(const Image& image) {
-    LinearImage out{image.width, image.height, std::vector<glm::vec3>(std::size_t(image.width) * std::size_t(image.height))};
+    LinearImage out{image.width, image.height, std::vector<glm::vec3>(std::size_t(image.width) * std::size_t(image.height)),
+                    image.text};
     for (std::size_t i = 0; i < out.rgb.size(); ++i)
         out.rgb[i] = glm::vec3(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2]) / 255.0f;
     return out;
@@ -205,6 +206,7 @@ std::string write_linear_image(const LinearImage& image, const std::string& path
         return "cannot write '" + path + "': the image's pixels do not match its size";
     if (!is_linear_output(path)) {
         Image bytes(image.width, image.height);
+        bytes.text = image.text;
         for (std::size_t i = 0; i < image.rgb.size(); ++i)
             for (int c = 0; c < 3; ++c) bytes.rgb[3 * i + std::size_t(c)] = to_byte(image.rgb[i][c]);
         return write_image(bytes, path);

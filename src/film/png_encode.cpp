@@ -88,6 +88,10 @@ bool encode_png(const Image& image, const std::function<void(const void*, std::s
     put32(ihdr, std::uint32_t(h));
     ihdr += std::string("\x08\x02\x00\x00\x00", 5);  // 8 bits, RGB, deflate, adaptive filters, no interlace
     write_chunk(write, "IHDR", reinterpret_cast<const unsigned char*>(ihdr.data()), ihdr.size());
+    for (const auto& [key, value] : image.text) {
+        const std::string text = key + '\0' + value;
+        write_chunk(write, "tEXt", reinterpret_cast<const unsigned char*>(text.data()), text.size());
+    }
     static const unsigned char kZlibHeader[2] = {0x78, 0x01};  // deflate, 32 KB window, fastest
     write_chunk(write, "IDAT", kZlibHeader, 2);
 

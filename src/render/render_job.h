@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "camera/camera.h"
 #include "film/pixel_region.h"
@@ -28,6 +29,10 @@ struct SamplingSettings {
     // to [0, 1]) get their aa × aa samples, the others keep their centre. 0 = every pixel.
     float aa_threshold = 0.0f;
     std::uint32_t seed = 0;  // another seed, other (equally good) sample values: independent renders
+    // > 0 (a render in passes, render/session.h): a pixel takes no more samples once its error
+    // estimate is below this in its whole neighbourhood, checked from min_spp samples on.
+    float noise_threshold = 0.0f;
+    int min_spp = 16;
     int samples_per_pixel() const { return Sampler(aa, spp).samples_per_pixel(); }
     bool adaptive() const { return aa > 1 && spp == 1 && aa_threshold > 0.0f; }
 };
@@ -43,6 +48,8 @@ struct RenderJob {
     // added in order, so rendering in passes gives the same bytes as in one go. Adaptive
     // anti-aliasing renders all samples at once.
     int sample_begin = 0, sample_end = -1;
+    // The pixels of the render region (row by row) to take samples, 1 each; null = all of them.
+    const std::vector<std::uint8_t>* active = nullptr;
     int threads = 0;  // 0 = all hardware threads
     int tile_size = 32;
     // Set by another thread (or a signal handler) to stop; checked at least once per tile row.

@@ -10,7 +10,6 @@
 #include "base/parallel_for.h"
 
 namespace whitted {
-namespace {
 
 std::vector<Tile> cut_into_tiles(const PixelRegion& r, int tile_size) {
     const int ts = std::max(1, tile_size);
@@ -19,8 +18,6 @@ std::vector<Tile> cut_into_tiles(const PixelRegion& r, int tile_size) {
         for (int x = r.x0; x < r.x1; x += ts) tiles.push_back({x, y, std::min(x + ts, r.x1), std::min(y + ts, r.y1)});
     return tiles;
 }
-
-}  // namespace
 
 Camera RenderJob::camera_for(const Scene& scene) const { return camera.value_or(scene.data.camera); }
 
@@ -71,6 +68,13 @@ RenderStats render_tiles(const Integrator& integrator, const RenderJob& job, con
     return run_tiles(
         integrator, job, tiles, worker_count(job.threads, tiles.size()),
         [&](int, const Tile&) -> Film& { return film; }, [](int, const Tile&, const Film&) {});
+}
+
+RenderStats render_tiles_into(const Integrator& integrator, const RenderJob& job, const std::vector<Tile>& tiles,
+                              const std::function<Film&(const Tile&)>& film_for) {
+    return run_tiles(
+        integrator, job, tiles, worker_count(job.threads, tiles.size()),
+        [&](int, const Tile& t) -> Film& { return film_for(t); }, [](int, const Tile&, const Film&) {});
 }
 
 RenderStats render(const Scene& scene, const RenderJob& job, Image& image) {

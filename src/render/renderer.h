@@ -2,6 +2,7 @@
 // Image-space driver: cuts the job's region into tiles, hands them to worker threads (each with
 // its own TileRenderer), and stops when asked. Every pixel depends only on its own coordinates
 // and sample indices, so the image is the same for any thread count and tile size.
+#include <functional>
 #include <vector>
 
 #include "film/film.h"
@@ -28,6 +29,14 @@ RenderStats render(const Integrator& integrator, const RenderJob& job, Film& fil
 // machine is rendered.
 RenderStats render_tiles(const Integrator& integrator, const RenderJob& job, const std::vector<Tile>& tiles,
                          Film& film);
+
+// The same, each tile's samples added to the film film_for(tile) gives (called on the worker that
+// renders the tile, before it does): a render session's passes continue each tile from the last.
+RenderStats render_tiles_into(const Integrator& integrator, const RenderJob& job, const std::vector<Tile>& tiles,
+                              const std::function<Film&(const Tile&)>& film_for);
+
+// The job's region cut into tiles of tile_size (the last ones of a row and column smaller), row by row.
+std::vector<Tile> cut_into_tiles(const PixelRegion& region, int tile_size);
 
 // The common case: the job's integrator on the job's camera, the whole image, into `image` (of the
 // job's size; pixels of tiles not reached before a cancel are left black).

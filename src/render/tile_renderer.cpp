@@ -50,21 +50,28 @@ inline Ray TileRenderer::camera_ray(const Sampler& sampler, int x, int y, std::u
     return camera_sample_ray(camera_, sampler, job_.width, job_.height, x, y, index);
 }
 
+bool TileRenderer::active(int x, int y) const {
+    const PixelRegion r = job_.render_region();
+    return (*job_.active)[std::size_t(y - r.y0) * std::size_t(r.width()) + std::size_t(x - r.x0)] != 0;
+}
+
 bool TileRenderer::render(const Tile& t, Film& film) {
     if (s0_ >= s1_) return !stop_requested();
+    halves_ = film.has_halves();
     if (!job_.sampling.adaptive()) {
-        if (s1_ - s0_ == 1) {
+        if (s1_ - s0_ == 1 && !job_.active) {
             for (int y = t.y0; y < t.y1; ++y) {
                 if (stop_requested()) return false;
                 if ((y - t.y0) % kPacketHeight == 0) trace_band(sampler_, t, y, std::uint32_t(s0_));
-                for (int x = t.x0; x < t.x1; ++x) film.add(x, y, displayed(band_at(t, x, y)));
+                for (int x = t.x0; x < t.x1; ++x) put(film, x, y, std::uint32_t(s0_), displayed(band_at(t, x, y)));
             }
             return true;
         }
         for (int y = t.y0; y < t.y1; ++y) {
             if (stop_requested()) return false;
-            const int n = t.x1 - t.x0;
-            for (int k = 0; k < n; ++k) xs_[std::size_t(k)] = t.x0 + k;
+            int n = 0;
+            for (int x = t.x0; x < t.x1; ++x)
+                if (!job_.active || active(x, y)) xs_[std::size_t(n++)] = x;
             add_samples(y, n, s0_, s1_, film);
         }
         return true;
@@ -130,7 +137,8 @@ void TileRenderer::add_samples(int y, int n, int s0, int s1, Film& film) {
         batch.active = (1u << lanes) - 1;
         glm::vec3 colors[kPacketSize];
         integrator_.radiance(batch, sampler_, colors, counts_);
-        for (int l = 0; l < lanes; ++l) film.add(xs_[std::size_t((k0 + l) / per_pixel)], y, displayed(colors[l]));
+        for (int l = 0; l < lanes; ++l)
+            put(film, xs_[std::size_t((k0 + l) / per_pixel)], y, batch.keys[l].index, displayed(colors[l]));
     }
 }
 

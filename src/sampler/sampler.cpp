@@ -59,43 +59,16 @@ std::uint32_t owen_scramble(std::uint32_t v, std::uint32_t seed) {
     return reverse_bits(v);
 }
 
-// A random-looking permutation of [0, n), element i (Kensler 2013, as pbrt-v4's PermutationElement).
-std::uint32_t permutation_element(std::uint32_t i, std::uint32_t n, std::uint32_t p) {
-    std::uint32_t w = n - 1;
-    w |= w >> 1;
-    w |= w >> 2;
-    w |= w >> 4;
-    w |= w >> 8;
-    w |= w >> 16;
-    do {
-        i ^= p;
-        i *= 0xe170893du;
-        i ^= p >> 16;
-        i ^= (i & w) >> 4;
-        i ^= p >> 8;
-        i *= 0x0929eb3fu;
-        i ^= p >> 23;
-        i ^= (i & w) >> 1;
-        i *= 1u | p >> 27;
-        i *= 0x6935fa69u;
-        i ^= (i & w) >> 11;
-        i *= 0x74dcb303u;
-        i ^= (i & w) >> 2;
-        i *= 0x9e501cc3u;
-        i ^= (i & w) >> 2;
-        i *= 0xc860a3dfu;
-        i &= w;
-        i ^= i >> 5;
-    } while (i >= n);
-    return (i + p) % n;
-}
-
 float to_unit(std::uint32_t v) { return std::min(float(v) * 0x1p-32f, 0x1.fffffep-1f); }
 
-// Point `index` of `n` of a scrambled, permuted 2-D Sobol set seeded by `h`.
-glm::vec2 sobol_2d(std::uint32_t index, std::uint32_t n, std::uint64_t h) {
-    const std::uint32_t i = permutation_element(index, n, std::uint32_t(h));
+// Point `index` of the scrambled, shuffled 2-D Sobol sequence seeded by `h`. The index is shuffled
+// by an Owen scramble of its own (Burley 2020, "Practical Hash-based Owen Scrambling"), which maps
+// every aligned block of 2^k indices onto an aligned block of 2^k points: any power-of-two prefix
+// of a pixel's samples is stratified, and the first N samples are the same whatever the total, so
+// a render stopped after N samples (a time budget, a pixel that converged) is an N-sample render.
+glm::vec2 sobol_2d(std::uint32_t index, std::uint64_t h) {
     const std::uint64_t h2 = mix64(h);  // the second coordinate's scramble, independent of the first's
+    const std::uint32_t i = owen_scramble(index, std::uint32_t(h));
     return {to_unit(owen_scramble(reverse_bits(i), std::uint32_t(h >> 32))),
             to_unit(owen_scramble(sobol_dim1(i), std::uint32_t(h2)))};
 }
@@ -109,14 +82,14 @@ glm::vec2 Sampler::pixel_offset(const SampleKey& key) const {
     const int cells = aa_ * aa_;
     const int cell = int(key.index % std::uint32_t(cells));
     glm::vec2 in_cell(0.5f);
-    if (spp_ > 1) in_cell = sobol_2d(key.index / std::uint32_t(cells), std::uint32_t(spp_), hash(key, dimension::kFilm, seed_));
+    if (spp_ > 1) in_cell = sobol_2d(key.index / std::uint32_t(cells), hash(key, dimension::kFilm, seed_));
     const float step = 1.0f / float(aa_);
     return {(float(cell % aa_) + in_cell.x) * step, (float(cell / aa_) + in_cell.y) * step};
 }
 
 glm::vec2 Sampler::get2d(const SampleKey& key, std::uint32_t dim) const {
     if (centred()) return glm::vec2(0.5f);
-    return sobol_2d(key.index, std::uint32_t(samples_per_pixel()), hash(key, dim, seed_));
+    return sobol_2d(key.index, hash(key, dim, seed_));
 }
 
 }  // namespace whitted

@@ -4,9 +4,11 @@
 // any range of sample indices can be rendered on its own (a viewer pass, another MPI rank).
 //
 // Each dimension is a pair of coordinates of the Sobol (0, 2)-sequence, Owen-scrambled (Laine
-// and Karras' hash, as pbrt-v4's FastOwenScrambler) and with the sample index permuted, both
-// seeded by a hash of the pixel and the dimension: pbrt-v4's PaddedSobolSampler. Every pair of
-// coordinates is stratified over a pixel's samples, and pairs are independent of one another.
+// and Karras' hash, as pbrt-v4's FastOwenScrambler) and with the sample index shuffled by an Owen
+// scramble of its own (Burley 2020), both seeded by a hash of the pixel and the dimension. Every
+// pair of coordinates is stratified over any power-of-two prefix of a pixel's samples, pairs are
+// independent of one another, and a sample's values do not depend on how many samples the pixel
+// gets: the first N samples of any render are those of an N-sample render (spp > 1).
 //
 // A pixel's n = aa² · spp samples: sample s lies in sub-pixel cell s mod aa² of an aa × aa grid
 // (row by row), at the cell's centre when spp = 1 (the regular anti-aliasing grid) or at a

@@ -75,7 +75,7 @@ TEST(CliHostile, AnInterruptedRenderNeverReplacesTheImage) {
         fs::remove(partial);
         auto r = run_process({test::cli_path(), scene, "-o", out, "--width", "2000", "--height", "2000",
                               "--max-depth", "12", "-q"},
-                             std::vector<TimedSignal>{{400, sig}, {60000, SIGKILL}});
+                             std::vector<TimedSignal>{{1500, sig}, {60000, SIGKILL}});
         EXPECT_EQ(r.exit_code, 130) << r.output;
         EXPECT_EQ(read_all(out), "a good image from yesterday");
         EXPECT_NE(r.output.find("to " + partial + " (" + out + " was not written)"), std::string::npos) << r.output;
@@ -119,7 +119,7 @@ TEST(CliHostile, AnOutputNameOf255BytesWorks) {
     const std::string heavy = write_file(dir, "heavy.sc", test::heavy_scene());
     r = run_process({test::cli_path(), heavy, "-o", dir + "/" + name, "--width", "2000", "--height", "2000",
                      "--max-depth", "12", "-q"},
-                    std::vector<TimedSignal>{{400, SIGTERM}, {60000, SIGKILL}});
+                    std::vector<TimedSignal>{{1500, SIGTERM}, {60000, SIGKILL}});
     EXPECT_EQ(r.exit_code, 130) << r.output;
     EXPECT_EQ(read_image(dir + "/" + std::string(243, 'n') + ".partial.png", img), "") << r.output;
     EXPECT_EQ(img.width, 2000);

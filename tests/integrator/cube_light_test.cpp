@@ -103,14 +103,20 @@ TEST(CubeLight, DensityCoversExactlyWhatTheShadingPointSees) {
             ASSERT_NEAR(aq[axis], 0.5f, 1e-4f);
             glm::vec3 n_obj(0.0f);
             n_obj[axis] = q[axis] > 0 ? 1.0f : -1.0f;
-            EXPECT_FLOAT_EQ(ls.pdf_area, lights.pdf_area(0, x, n_obj));
             const glm::vec3 to = ls.point - x;
             const double d = glm::length(to);
-            if (omega < 4 * kPi) {
-                ASSERT_GT(n_obj[axis] * (p_obj[axis] - q[axis]), 0.0f) << "a face x is behind";
-                Hit hit;
-                ASSERT_TRUE(scene.intersect(Ray{x, to / float(d)}, hit));
-                EXPECT_NEAR(hit.t, d, 1e-3 * d) << "hidden behind another face";
+            // A point on a face's edge (a sample coordinate within 1e-4 of 0 or 1) belongs to two
+            // faces as far as its coordinates tell, and the ray to it grazes the cube, which rounding
+            // may let pass: the face and visibility are checked away from the edges.
+            const bool on_edge = 0.5f - std::max(aq[(axis + 1) % 3], aq[(axis + 2) % 3]) < 1e-4f;
+            if (!on_edge) {
+                EXPECT_FLOAT_EQ(ls.pdf_area, lights.pdf_area(0, x, n_obj));
+                if (omega < 4 * kPi) {
+                    ASSERT_GT(n_obj[axis] * (p_obj[axis] - q[axis]), 0.0f) << "a face x is behind";
+                    Hit hit;
+                    ASSERT_TRUE(scene.intersect(Ray{x, to / float(d)}, hit));
+                    EXPECT_NEAR(hit.t, d, 1e-3 * d) << "hidden behind another face";
+                }
             }
             const double cos_l = std::abs(glm::dot(ls.normal, glm::vec3(to / float(d))));
             inverse.push_back(cos_l / (ls.pdf_area * d * d));

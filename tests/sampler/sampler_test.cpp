@@ -80,6 +80,32 @@ TEST(Sampler, EachDimensionIsAZeroMTwoNet) {
     }
 }
 
+// Progressive: every power-of-two prefix of a pixel's samples is a (0, m, 2)-net too, and the first
+// N samples of a render with more are those of an N-sample render (a time budget or a converged
+// pixel stops after N: the image is an N-sample image, not a badly stratified part of a bigger one).
+TEST(Sampler, EveryPowerOfTwoPrefixIsANetAndIndependentOfTheTotal) {
+    const Sampler big(1, 1024), small(1, 32);
+    for (std::uint32_t dim : {dimension::kLens, dimension::light(1, 2), dimension::path(3, dimension::kPathDirection)})
+        for (std::uint32_t px : {0u, 5u, 777u}) {
+            for (int m = 1; m <= 10; ++m) {
+                const std::uint32_t n = 1u << m;
+                for (int a = 0; a <= m; ++a) {
+                    const int nx = 1 << a, ny = 1 << (m - a);
+                    std::set<int> boxes;
+                    for (std::uint32_t i = 0; i < n; ++i) {
+                        const glm::vec2 p = big.get2d({px, 9, i}, dim);
+                        boxes.insert(int(p.y * float(ny)) * nx + int(p.x * float(nx)));
+                    }
+                    ASSERT_EQ(boxes.size(), n) << "prefix " << n << " a " << a << " dim " << dim << " pixel " << px;
+                }
+            }
+            for (std::uint32_t i = 0; i < 32; ++i) {
+                EXPECT_EQ(big.get2d({px, 9, i}, dim), small.get2d({px, 9, i}, dim)) << "sample " << i;
+                EXPECT_EQ(big.pixel_offset({px, 9, i}), small.pixel_offset({px, 9, i})) << "sample " << i;
+            }
+        }
+}
+
 TEST(Sampler, PixelPositionsWithinACellAreStratifiedToo) {
     const Sampler s(1, 16);
     std::set<int> boxes;

@@ -6,15 +6,17 @@
 #include <string>
 
 #include "render/load_scene.h"
+#include "render/render_job.h"
 
-namespace whitted::cli {
+namespace whitted {
 
 // "4G", "512M", "100000K", "2000000000": a number of bytes with an optional binary suffix.
 std::optional<std::size_t> parse_memory_size(const std::string& text);
 
 // What rendering and writing a width × height image to `output` takes besides the scene: the
-// film and the copy the writer encodes (the encoders stream it; PNG keeps a few 4 MB bands in flight).
-std::size_t image_memory(int width, int height, const std::string& output);
+// film (two while a pass continues the last, session/session.h; with adaptive sampling's even
+// sums) and the copy the writer encodes (the encoders stream it; PNG keeps a few 4 MB bands in flight).
+std::size_t image_memory(int width, int height, const std::string& output, const SamplingSettings& sampling = {});
 
 // --untrusted: limits for files one did not write (README, "Rendering files from others").
 struct UntrustedLimits {
@@ -32,4 +34,4 @@ struct UntrustedLimits {
 // Applies UntrustedLimits to a load (textures confined to the scene's folder and --texture-path).
 void apply_untrusted(LoadOptions& options);
 
-}  // namespace whitted::cli
+}  // namespace whitted

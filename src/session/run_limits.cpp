@@ -1,4 +1,4 @@
-#include "run_limits.h"
+#include "session/run_limits.h"
 
 #include <algorithm>
 #include <cctype>
@@ -8,8 +8,9 @@
 
 #include "film/film.h"
 #include "film/image_io.h"
+#include "session/session.h"
 
-namespace whitted::cli {
+namespace whitted {
 
 std::optional<std::size_t> parse_memory_size(const std::string& text) {
     char* end = nullptr;
@@ -27,10 +28,12 @@ std::optional<std::size_t> parse_memory_size(const std::string& text) {
     return std::size_t(value * scale);
 }
 
-std::size_t image_memory(int width, int height, const std::string& output) {
-    // The film (FilmPixel: a sum of 3 floats and a weight), then the copy the writer encodes:
-    // 3 floats a pixel for .exr/.pfm, 3 bytes for the 8-bit formats.
-    const std::size_t per_pixel = sizeof(FilmPixel) + (is_linear_output(output) ? 3 * sizeof(float) : 3);
+std::size_t image_memory(int width, int height, const std::string& output, const SamplingSettings& sampling) {
+    // The films (FilmPixel: a sum of 3 floats and a weight; adaptive sampling adds 3 floats of even
+    // sums), then the copy the writer encodes: 3 floats a pixel for .exr/.pfm, 3 bytes for the 8-bit formats.
+    const std::size_t films = sample_passes(sampling).size() > 1 ? 2 : 1;
+    const std::size_t film = sizeof(FilmPixel) + (sampling.noise_threshold > 0.0f ? 3 * sizeof(float) : 0);
+    const std::size_t per_pixel = films * film + (is_linear_output(output) ? 3 * sizeof(float) : 3);
     return std::size_t(width) * std::size_t(height) * per_pixel;
 }
 
@@ -46,4 +49,4 @@ void apply_untrusted(LoadOptions& options) {
     options.textures.confined = true;
 }
 
-}  // namespace whitted::cli
+}  // namespace whitted

@@ -1,0 +1,196 @@
+#include "session/render_settings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "integrator/render_mode.h"
+#include "session/run_limits.h"
+
+namespace whitted {
+namespace {
+
+using S = RenderSettings;
+constexpr unsigned kMpi = unsigned(Frontend::Mpi);
+
+}  // namespace
+
+const std::vector<const char*>& render_mode_names() {
+    static const std::vector<const char*> names{"whitted", "path", "raycast", "normals", "depth"};
+    return names;
+}
+
+const std::vector<Setting>& render_settings_table() {
+    static const std::vector<Setting> table{
+        {"width", "Width", "Image width in pixels", &S::width, 1, 32768, {}, true},
+        {"height", "Height", "Image height in pixels", &S::height, 1, 32768, {}, true},
+        {"mode", "Mode",
+         "Render mode: whitted (the lab's model), path (physically based path tracing), raycast, normals, depth",
+         &S::mode, 0, 0, render_mode_names(), true},
+        {"max-depth", "Depth",
+         "Recursion limit for reflection/refraction (camera ray = 0); in path mode the bounces of a path (default 64 "
+         "there)",
+         &S::max_depth, 0, 1000, {}, true},
+        {"aa", "AA", "Anti-aliasing: N x N rays per pixel, averaged (1 = one ray through the centre)", &S::aa, 1,
+         Sampler::kMaxAa, {}, true},
+        {"spp", "SPP",
+         "Samples per pixel (per sub-pixel with --aa N: N x N x spp in all) for soft shadows, depth of field, gloss "
+         "and path tracing; they arrive in passes (1 = the pixel, lens and light centres; default 64 in path mode)",
+         &S::spp, 1, Sampler::kMaxSpp, {}, true},
+        {"aa-threshold", "AA threshold",
+         "Adaptive anti-aliasing: supersample only pixels whose colour differs from a neighbour's by more than this "
+         "(0-1, per channel; 0 = every pixel); with --spp > 1 it is the noise threshold",
+         &S::aa_threshold, 0, 1, {}, true},
+        {"noise-threshold", "Noise threshold",
+         "Adaptive sampling: a pixel takes no more samples once its error estimate is below this (e.g. 0.01; 0 = "
+         "off); needs --spp > 1",
+         &S::noise_threshold, 0, 1, {}, true, kMpi,
+         "adaptive sampling needs passes over the whole image, and whitted-mpi renders each tile's samples at once"},
+        {"min-spp", "Min SPP", "Adaptive sampling: the samples every pixel takes before it may stop", &S::min_spp, 1,
+         Sampler::kMaxSpp, {}, true, kMpi, "whitted-mpi has no adaptive sampling (see --noise-threshold)"},
+        {"time", "Scene time",
+         "Scene time t: 'velocity x y z' moves by t·(x, y, z), 'angularrate ax ay az r' turns by r·t degrees (0 = "
+         "the still image)",
+         &S::time, -1e30, 1e30, {}, true},
+        {"threads", "Threads", "Worker threads (0 = all hardware threads)", &S::threads, 0, 1024, {}, false},
+        {"lenient", "Lenient", "Skip unknown keywords and object types with a warning instead of failing",
+         &S::lenient, 0, 0, {}, true},
+        {"missing-textures", "Missing textures",
+         "A texture that cannot be loaded: error (the viewer asks for the file), checker (a checkerboard), ask (the "
+         "same as error)",
+         &S::missing_textures, 0, 0, {"error", "checker", "ask"}, true},
+        {"texture-path", "Texture folders", "Extra directory to look for textures in (repeat for more)",
+         &S::texture_dirs, 0, 0, {}, true},
+        {"untrusted", "Untrusted",
+         "For scene files you did not write: textures only from the scene's folder and --texture-path, and lower "
+         "limits on file sizes, objects, textures, memory (1G) and time (60 s) (see the README)",
+         &S::untrusted, 0, 0, {}, false},
+        {"max-memory", "Memory limit",
+         "Memory the image and scene may need, estimated before anything is built: a size such as 512M or 4G "
+         "(default: three quarters of this machine's RAM)",
+         &S::max_memory, 0, 0, {}, false},
+        {"timeout", "Timeout",
+         "Stop after this many seconds (load and render), keeping the last whole pass (or the tiles of the first) as "
+         "NAME.partial.EXT, exit 4; 0 = never",
+         &S::timeout, 0, 1e7, {}, false},
+        {"time-limit", "Time limit",
+         "Render whole passes while they fit in this many seconds (load and write included), then write the complete "
+         "image at the samples reached, exit 0; 0 = none",
+         &S::time_limit, 0, 1e7, {}, false, kMpi,
+         "a time budget renders whole passes over the image, and whitted-mpi renders each tile's samples at once; "
+         "use --timeout (or the batch system's limit)"},
+    };
+    return table;
+}
+
+const Setting* find_setting(std::string_view name) {
+    for (const Setting& s : render_settings_table())
+        if (name == s.name) return &s;
+    return nullptr;
+}
+
+void apply_mode_defaults(RenderSettings& s) {
+    const bool path = s.mode == "path";  // §9.2: a path tracer's defaults
+    if (!s.is_given("spp")) s.spp = path ? 64 : 1;
+    if (!s.is_given("max-depth")) s.max_depth = path ? 64 : 5;
+}
+
+std::string validate(RenderSettings& s) {
+    if (!parse_render_mode(s.mode)) return "unknown render mode '" + s.mode + "'";
+    for (const Setting& setting : render_settings_table()) {
+        const bool ok = std::visit(
+            [&](auto member) {
+                using T = std::remove_cvref_t<decltype(s.*member)>;
+                if constexpr (std::is_same_v<T, int> || std::is_same_v<T, float> || std::is_same_v<T, double>)
+                    return std::isfinite(double(s.*member)) && double(s.*member) >= setting.min &&
+                           double(s.*member) <= setting.max;
+                else if constexpr (std::is_same_v<T, std::string>)
+                    return setting.choices.empty() ||
+                           std::any_of(setting.choices.begin(), setting.choices.end(),
+                                       [&](const char* c) { return s.*member == c; });
+                else
+                    return true;
+            },
+            setting.field);
+        if (!ok) return "--" + std::string(setting.name) + " " + setting_text(s, setting) + " is out of its range";
+    }
+    if (!s.max_memory.empty() && !parse_memory_size(s.max_memory))
+        return "--max-memory " + s.max_memory + " is not a size such as 512M or 4G";
+    if (s.aa_threshold > 0.0f && s.spp > 1) {
+        // Pixel centres carry no penumbra or blur: with samples, the threshold is the noise threshold.
+        if (s.noise_threshold == 0.0f) s.noise_threshold = s.aa_threshold;
+        s.aa_threshold = 0.0f;
+    }
+    if (s.noise_threshold > 0.0f && s.spp * s.aa * s.aa < 2)
+        return "--noise-threshold stops pixels between passes of samples: give --spp 2 or more (--spp 64, say)";
+    if (s.untrusted && (s.width > UntrustedLimits::kImageSide || s.height > UntrustedLimits::kImageSide))
+        return "--untrusted renders images of at most " + std::to_string(UntrustedLimits::kImageSide) + "x" +
+               std::to_string(UntrustedLimits::kImageSide) + " pixels (" + std::to_string(s.width) + "x" +
+               std::to_string(s.height) + " asked for)";
+    return "";
+}
+
+std::string setting_text(const RenderSettings& s, const Setting& setting) {
+    return std::visit(
+        [&](auto member) {
+            std::ostringstream out;
+            using T = std::remove_cvref_t<decltype(s.*member)>;
+            if constexpr (std::is_same_v<T, std::vector<std::string>>) {
+                for (std::size_t i = 0; i < (s.*member).size(); ++i) out << (i ? "," : "") << (s.*member)[i];
+            } else if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+                out.precision(std::is_same_v<T, float> ? 9 : 17);  // every value reads back as itself
+                out << s.*member;
+            } else {
+                out << s.*member;
+            }
+            return out.str();
+        },
+        setting.field);
+}
+
+std::string pixel_key(const RenderSettings& s) {
+    std::string key;
+    for (const Setting& setting : render_settings_table())
+        if (setting.changes_pixels) key += std::string(setting.name) + "=" + setting_text(s, setting) + ";";
+    return key;
+}
+
+RenderJob make_render_job(const RenderSettings& s) {
+    RenderJob job;
+    job.width = s.width;
+    job.height = s.height;
+    job.integrator = {*parse_render_mode(s.mode), s.max_depth};
+    job.sampling.aa = s.aa;
+    job.sampling.spp = s.spp;
+    job.sampling.aa_threshold = s.aa_threshold;
+    job.sampling.noise_threshold = s.noise_threshold;
+    job.sampling.min_spp = s.min_spp;
+    job.threads = s.threads;
+    return job;
+}
+
+std::size_t memory_limit(const RenderSettings& s) {
+    if (!s.max_memory.empty())
+        if (const auto bytes = parse_memory_size(s.max_memory)) return *bytes;
+    return s.untrusted ? UntrustedLimits::kMemory : default_max_memory();
+}
+
+double timeout_seconds(const RenderSettings& s) {
+    if (s.is_given("timeout") || !s.untrusted) return s.timeout;
+    return UntrustedLimits::kSeconds;
+}
+
+LoadOptions make_load_options(const RenderSettings& s, std::size_t image_bytes) {
+    LoadOptions lo;
+    lo.lenient = s.lenient;
+    lo.threads = s.threads;  // --threads 1 means one thread for the build too
+    lo.time = s.time;
+    lo.textures.search_dirs = s.texture_dirs;
+    lo.textures.missing = s.missing_textures == "checker" ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
+    const std::size_t limit = memory_limit(s);
+    lo.max_memory = limit - std::min(limit, image_bytes);
+    if (s.untrusted) apply_untrusted(lo);
+    return lo;
+}
+
+}  // namespace whitted

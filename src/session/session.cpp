@@ -1,0 +1,160 @@
+#include "session/session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+#include "accel/scene.h"
+#include "base/parallel_for.h"
+#include "integrator/integrator.h"
+
+namespace whitted {
+
+std::vector<int> sample_passes(const SamplingSettings& sampling) {
+    const int n = sampling.samples_per_pixel();
+    if (sampling.adaptive()) return {n};
+    std::vector<int> ends{std::min(n, Sampler(sampling.aa, 1).samples_per_pixel())};
+    while (ends.back() < n) ends.push_back(std::min(n, 2 * ends.back()));
+    return ends;
+}
+
+Session::Session(std::shared_ptr<const Scene> scene, const RenderJob& job)
+    : scene_(std::move(scene)), job_(job),
+      integrator_(make_integrator(*scene_, job.camera_for(*scene_), job.integrator)),
+      passes_(sample_passes(job.sampling)), tiles_(cut_into_tiles(job.render_region(), job.tile_size)) {
+    job_.on_tile = nullptr;  // the session's own, per pass
+    const PixelRegion region = job_.render_region();
+    films_[0].reset(job_.width, job_.height, region);
+    if (passes_.size() > 1) films_[1].reset(job_.width, job_.height, region);
+    if (job_.sampling.noise_threshold > 0.0f && passes_.size() > 1) {
+        for (Film& f : films_) f.keep_halves();
+        const std::size_t pixels = std::size_t(region.width()) * std::size_t(region.height());
+        active_.assign(pixels, 1);
+        converged_at_.assign(pixels, 0);
+    }
+}
+
+Session::~Session() = default;
+
+PassStats Session::render_pass(const std::function<void(const Tile&, const Film&)>& on_tile) {
+    PassStats pass;
+    if (done()) return pass;
+    const auto start = std::chrono::steady_clock::now();
+    pass.samples_begin = samples_done();
+    pass.samples_end = passes_[std::size_t(passes_done_)];
+    RenderJob job = job_;
+    job.sample_begin = pass.samples_begin;
+    job.sample_end = pass.samples_end;
+    job.active = active_.empty() ? nullptr : &active_;
+    pass.pixels = active_.empty() ? std::size_t(job.render_region().width()) * std::size_t(job.render_region().height())
+                                  : std::size_t(std::count(active_.begin(), active_.end(), std::uint8_t(1)));
+    // The first pass renders into the film shown (there is nothing to keep); each later one continues
+    // every tile from the last whole pass into the other film, which becomes the one shown once the
+    // pass is complete.
+    Film& target = passes_done_ == 0 ? *shown_ : (shown_ == &films_[0] ? films_[1] : films_[0]);
+    const bool first = passes_done_ == 0;
+    job.on_tile = [&](const Tile& t) {
+        if (on_tile) on_tile(t, target);
+    };
+    pass.render = render_tiles_into(*integrator_, job, tiles_, [&](const Tile& t) -> Film& {
+        if (!first) target.copy_from(*shown_, t);
+        return target;
+    });
+    rays_ += pass.render.rays;
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (pass.render.cancelled) return pass;
+    shown_ = &target;
+    ++passes_done_;
+    if (!active_.empty()) update_convergence();
+    last_ = pass;
+    return pass;
+}
+
+double Session::forecast_next_pass_seconds() const {
+    if (passes_done_ == 0 || done() || last_.pixels == 0) return 0.0;
+    const double per_sample_pixel = last_.render.seconds / (double(last_.samples_end - last_.samples_begin) *
+                                                            double(last_.pixels));
+    const std::size_t pixels =
+        active_.empty() ? last_.pixels : std::size_t(std::count(active_.begin(), active_.end(), std::uint8_t(1)));
+    return per_sample_pixel * double(passes_[std::size_t(passes_done_)] - samples_done()) * double(pixels);
+}
+
+// A pixel's error estimate: its mean against the mean of its even-numbered samples (half of them),
+// whose difference estimates the standard error of the mean, relative to the square root of its
+// brightness (noise in dark pixels is seen more, as Cycles weighs it).
+static float pixel_error(const FilmPixel& p, const glm::vec3& even_sum) {
+    const float n = p.weight, n_even = std::ceil(n * 0.5f);
+    if (n < 2.0f) return INFINITY;
+    const glm::vec3 all = p.sum / n, even = even_sum / n_even;
+    const glm::vec3 d = glm::abs(all - even);
+    return (d.x + d.y + d.z) / (1e-4f + std::sqrt(std::max(0.0f, all.x + all.y + all.z)));
+}
+
+void Session::update_convergence() {
+    if (samples_done() < job_.sampling.min_spp) return;
+    const PixelRegion r = job_.render_region();
+    const int w = r.width(), h = r.height();
+    std::vector<float> error(std::size_t(w) * std::size_t(h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            error[std::size_t(y) * std::size_t(w) + std::size_t(x)] =
+                pixel_error(shown_->at(r.x0 + x, r.y0 + y), shown_->half_sum(r.x0 + x, r.y0 + y));
+    const float threshold = job_.sampling.noise_threshold;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+            if (!active_[i]) continue;
+            bool converged = true;
+            for (int ny = std::max(0, y - 1); ny <= std::min(h - 1, y + 1) && converged; ++ny)
+                for (int nx = std::max(0, x - 1); nx <= std::min(w - 1, x + 1); ++nx)
+                    if (!(error[std::size_t(ny) * std::size_t(w) + std::size_t(nx)] < threshold)) {
+                        converged = false;
+                        break;
+                    }
+            if (converged) {
+                active_[i] = 0;
+                converged_at_[i] = std::uint16_t(passes_done_);
+            }
+        }
+}
+
+std::vector<int> Session::samples_per_pixel() const {
+    const PixelRegion r = job_.render_region();
+    std::vector<int> out(std::size_t(r.width()) * std::size_t(r.height()));
+    for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x)
+            out[std::size_t(y - r.y0) * std::size_t(r.width()) + std::size_t(x - r.x0)] = int(film().at(x, y).weight);
+    return out;
+}
+
+bool Session::render_preview(int divisor, Image& out) const {
+    RenderJob small = job_;
+    small.width = std::max(1, (job_.width + divisor - 1) / divisor);
+    small.height = std::max(1, (job_.height + divisor - 1) / divisor);
+    small.region.reset();
+    small.sampling = SamplingSettings{};
+    small.sample_begin = 0;
+    small.sample_end = -1;
+    small.active = nullptr;
+    small.on_tile = nullptr;
+    Film film(small.width, small.height);
+    if (render(*integrator_, small, film).cancelled) return false;
+    out = enlarge_nearest(film.to_image(), job_.width, job_.height);
+    return true;
+}
+
+Image enlarge_nearest(const Image& small, int width, int height) {
+    Image big(width, height);
+    if (small.width <= 0 || small.height <= 0) return big;
+    for (int y = 0; y < height; ++y) {
+        const int sy = int(std::int64_t(y) * small.height / height);
+        for (int x = 0; x < width; ++x) {
+            const int sx = int(std::int64_t(x) * small.width / width);
+            std::memcpy(&big.rgb[(std::size_t(y) * width + x) * 3], &small.rgb[(std::size_t(sy) * small.width + sx) * 3], 3);
+        }
+    }
+    return big;
+}
+
+}  // namespace whitted
