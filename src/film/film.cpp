@@ -13,16 +13,11 @@ void Film::reset(int width, int height, const PixelRegion& region) {
     height_ = height;
     region_ = region;
     pixels_.assign(std::size_t(std::max(0, region.width())) * std::size_t(std::max(0, region.height())), FilmPixel{});
-    if (has_halves()) halves_.assign(pixels_.size(), glm::vec3(0.0f));
 }
 
-void Film::keep_halves() { halves_.assign(pixels_.size(), glm::vec3(0.0f)); }
-
 void Film::copy_from(const Film& from, const PixelRegion& r) {
-    for (int y = r.y0; y < r.y1; ++y) std::copy_n(&from.at(r.x0, y), r.width(), &at(r.x0, y));
-    if (has_halves() && from.has_halves())
-        for (int y = r.y0; y < r.y1; ++y)
-            std::copy_n(&from.halves_[from.index(r.x0, y)], r.width(), &halves_[index(r.x0, y)]);
+    for (int y = r.y0; y < r.y1; ++y)
+        std::copy_n(&from.at(r.x0, y), r.width(), &at(r.x0, y));
 }
 
 Image Film::to_image() const {

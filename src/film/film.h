@@ -47,13 +47,6 @@ public:
         p.weight += 1.0f;
     }
 
-    // Adaptive sampling's error estimate (render/session.h): the film also keeps, per pixel, the
-    // sum of the samples with an even index. Off unless asked for (12 more bytes a pixel).
-    void keep_halves();
-    bool has_halves() const { return !halves_.empty(); }
-    void add_half(int x, int y, const glm::vec3& color) { halves_[index(x, y)] += color; }
-    const glm::vec3& half_sum(int x, int y) const { return halves_[index(x, y)]; }
-
     // Copies the pixels of `r` (inside both films' regions) from `from`: how the parts of an image
     // rendered apart come together (regions never overlap, so nothing is added twice).
     void copy_from(const Film& from, const PixelRegion& r);
@@ -73,7 +66,6 @@ private:
     int width_ = 0, height_ = 0;
     PixelRegion region_;
     std::vector<FilmPixel> pixels_;
-    std::vector<glm::vec3> halves_;  // keep_halves(): per pixel, the sum of the even-numbered samples
 };
 
 }  // namespace whitted

@@ -57,13 +57,12 @@ bool TileRenderer::active(int x, int y) const {
 
 bool TileRenderer::render(const Tile& t, Film& film) {
     if (s0_ >= s1_) return !stop_requested();
-    halves_ = film.has_halves();
     if (!job_.sampling.adaptive()) {
         if (s1_ - s0_ == 1 && !job_.active) {
             for (int y = t.y0; y < t.y1; ++y) {
                 if (stop_requested()) return false;
                 if ((y - t.y0) % kPacketHeight == 0) trace_band(sampler_, t, y, std::uint32_t(s0_));
-                for (int x = t.x0; x < t.x1; ++x) put(film, x, y, std::uint32_t(s0_), displayed(band_at(t, x, y)));
+                for (int x = t.x0; x < t.x1; ++x) film.add(x, y, displayed(band_at(t, x, y)));
             }
             return true;
         }
@@ -137,8 +136,7 @@ void TileRenderer::add_samples(int y, int n, int s0, int s1, Film& film) {
         batch.active = (1u << lanes) - 1;
         glm::vec3 colors[kPacketSize];
         integrator_.radiance(batch, sampler_, colors, counts_);
-        for (int l = 0; l < lanes; ++l)
-            put(film, xs_[std::size_t((k0 + l) / per_pixel)], y, batch.keys[l].index, displayed(colors[l]));
+        for (int l = 0; l < lanes; ++l) film.add(xs_[std::size_t((k0 + l) / per_pixel)], y, displayed(colors[l]));
     }
 }
 

@@ -49,11 +49,6 @@ private:
     glm::vec3& band_at(const Tile& region, int x, int y);
     // Adds samples [s0, s1) of pixels xs_[0 .. n) of row y to the film.
     void add_samples(int y, int n, int s0, int s1, Film& film);
-    // Adds sample `index`'s colour to pixel (x, y) of the film (and to its even half, if it keeps one).
-    void put(Film& film, int x, int y, std::uint32_t index, const glm::vec3& c) {
-        film.add(x, y, c);
-        if (halves_ && (index & 1u) == 0) film.add_half(x, y, c);
-    }
     // The job's active-pixel mask: whether pixel (x, y) takes samples.
     bool active(int x, int y) const;
     // Adaptive: true when pixel (x, y)'s centre colour differs from a neighbour's in `apron`.
@@ -67,7 +62,6 @@ private:
     Sampler sampler_;
     Sampler centre_sampler_;  // one sample per pixel: every centre (adaptive's first look)
     bool clamp_;
-    bool halves_ = false;  // the film of the tile being rendered keeps even-sample sums
     int s0_, s1_;
     int band_y0_ = 0, band_w_;
     std::vector<glm::vec3> band_;     // band_w_ × kPacketHeight colours of one sample

@@ -29,11 +29,10 @@ std::optional<std::size_t> parse_memory_size(const std::string& text) {
 }
 
 std::size_t image_memory(int width, int height, const std::string& output, const SamplingSettings& sampling) {
-    // The films (FilmPixel: a sum of 3 floats and a weight; adaptive sampling adds 3 floats of even
-    // sums), then the copy the writer encodes: 3 floats a pixel for .exr/.pfm, 3 bytes for the 8-bit formats.
+    // The films (FilmPixel: a sum of 3 floats and a weight; two while a pass continues the last),
+    // then the copy the writer encodes: 3 floats a pixel for .exr/.pfm, 3 bytes for the 8-bit formats.
     const std::size_t films = sample_passes(sampling).size() > 1 ? 2 : 1;
-    const std::size_t film = sizeof(FilmPixel) + (sampling.noise_threshold > 0.0f ? 3 * sizeof(float) : 0);
-    const std::size_t per_pixel = films * film + (is_linear_output(output) ? 3 * sizeof(float) : 3);
+    const std::size_t per_pixel = films * sizeof(FilmPixel) + (is_linear_output(output) ? 3 * sizeof(float) : 3);
     return std::size_t(width) * std::size_t(height) * per_pixel;
 }
 

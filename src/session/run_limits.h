@@ -14,8 +14,7 @@ namespace whitted {
 std::optional<std::size_t> parse_memory_size(const std::string& text);
 
 // What rendering and writing a width × height image to `output` takes besides the scene: the
-// film (two while a pass continues the last, session/session.h; with adaptive sampling's even
-// sums) and the copy the writer encodes (the encoders stream it; PNG keeps a few 4 MB bands in flight).
+// film (two while a pass continues the last, session/session.h) and the copy the writer encodes (the encoders stream it; PNG keeps a few 4 MB bands in flight).
 std::size_t image_memory(int width, int height, const std::string& output, const SamplingSettings& sampling = {});
 
 // --untrusted: limits for files one did not write (README, "Rendering files from others").

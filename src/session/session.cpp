@@ -28,7 +28,6 @@ Session::Session(std::shared_ptr<const Scene> scene, const RenderJob& job)
     films_[0].reset(job_.width, job_.height, region);
     if (passes_.size() > 1) films_[1].reset(job_.width, job_.height, region);
     if (job_.sampling.noise_threshold > 0.0f && passes_.size() > 1) {
-        for (Film& f : films_) f.keep_halves();
         const std::size_t pixels = std::size_t(region.width()) * std::size_t(region.height());
         active_.assign(pixels, 1);
         converged_at_.assign(pixels, 0);
@@ -80,14 +79,11 @@ double Session::forecast_next_pass_seconds() const {
     return per_sample_pixel * double(passes_[std::size_t(passes_done_)] - samples_done()) * double(pixels);
 }
 
-// A pixel's error estimate: its mean against the mean of its even-numbered samples (half of them),
-// whose difference estimates the standard error of the mean, relative to the square root of its
-// brightness (noise in dark pixels is seen more, as Cycles weighs it).
-static float pixel_error(const FilmPixel& p, const glm::vec3& even_sum) {
-    const float n = p.weight, n_even = std::ceil(n * 0.5f);
-    if (n < 2.0f) return INFINITY;
-    const glm::vec3 all = p.sum / n, even = even_sum / n_even;
-    const glm::vec3 d = glm::abs(all - even);
+float pixel_error_estimate(const FilmPixel& now, const FilmPixel& before) {
+    const float n = now.weight, m = before.weight;
+    if (!(m > 0.0f && n > m)) return INFINITY;
+    const glm::vec3 all = now.sum / n, first = before.sum / m;
+    const glm::vec3 d = glm::abs(all - first) * std::sqrt(m / (n - m));
     return (d.x + d.y + d.z) / (1e-4f + std::sqrt(std::max(0.0f, all.x + all.y + all.z)));
 }
 
@@ -95,11 +91,15 @@ void Session::update_convergence() {
     if (samples_done() < job_.sampling.min_spp) return;
     const PixelRegion r = job_.render_region();
     const int w = r.width(), h = r.height();
+    const Film& before = shown_ == &films_[0] ? films_[1] : films_[0];  // the pass before the last
     std::vector<float> error(std::size_t(w) * std::size_t(h));
     for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            error[std::size_t(y) * std::size_t(w) + std::size_t(x)] =
-                pixel_error(shown_->at(r.x0 + x, r.y0 + y), shown_->half_sum(r.x0 + x, r.y0 + y));
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+            // A pixel that took no samples in the last pass keeps the estimate that stopped it: 0.
+            error[i] = active_[i] ? pixel_error_estimate(shown_->at(r.x0 + x, r.y0 + y), before.at(r.x0 + x, r.y0 + y))
+                                  : 0.0f;
+        }
     const float threshold = job_.sampling.noise_threshold;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {

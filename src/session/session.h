@@ -10,10 +10,10 @@
 // only during the first pass. Samples are added to every pixel in index order, so the bytes are
 // those of a render of that many samples in one go, for any thread count and tile size.
 //
-// A noise threshold (as Cycles' adaptive sampling) stops each pixel once its error estimate,
-// from the mean of its even-numbered samples against the mean of all, is below the threshold in
-// its whole 3 × 3 neighbourhood; checked between passes from a minimum of samples, so the result
-// does not depend on threads or tiles either.
+// A noise threshold (as Cycles' adaptive sampling) stops each pixel once its error estimate, from
+// its mean after the last pass against its mean after the one before (the other film holds it), is
+// below the threshold in its whole 3 × 3 neighbourhood; checked between passes from a minimum of
+// samples, so the result does not depend on threads or tiles either.
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -34,6 +34,16 @@ std::vector<int> sample_passes(const SamplingSettings& sampling);
 
 // The resolutions of the coarse frames a moving camera gets before the full image, as divisors.
 inline constexpr int kPreviewDivisors[] = {8, 4, 2};
+
+// Adaptive sampling's error estimate of a pixel of n samples, from the same pixel when it had its
+// first m < n: with A the mean of the first m and B of the other n − m, the difference of the two
+// means is (n − m)/n · (B − A), which estimates the standard error of the whole mean once scaled by
+// sqrt(m / (n − m)) (1 for the halves of a doubling pass). Both parts are power-of-two blocks of the
+// pixel's stratified samples (sampler/sampler.h), so the estimate stays honest where plain
+// variance would overstate stratified error many times. Summed over the channels and divided by
+// the square root of the pixel's brightness (noise in dark pixels is seen more, as Cycles weighs
+// it). Infinite without an earlier part to compare with.
+float pixel_error_estimate(const FilmPixel& now, const FilmPixel& before);
 
 // What a pass did.
 struct PassStats {
