@@ -109,8 +109,12 @@ int run(int argc, char** argv) {
     total.seconds = session.seconds();
     if (o.stats) print_stats(loaded.stats, total, session.samples_done(), session.passes_done());
     if (!complete && session.passes_done() == 0 && last.tiles_done == 0) {
-        std::cerr << "whitted: " << (limit_ran_out() ? "error: the time limit ran out" : "interrupted")
-                  << " before any tile was rendered: nothing written\n";
+        if (limit_ran_out())
+            std::cerr << "whitted: error: the time limit of "
+                      << (deadline.timed_out() ? timeout_seconds(s) : s.time_limit) << " s (" << limit_ran_out()
+                      << ") ran out before any tile was rendered: nothing written\n";
+        else
+            std::cerr << "whitted: interrupted before any tile was rendered: nothing written\n";
         return limit_ran_out() ? kExitTimeout : kExitInterrupted;
     }
 
