@@ -6,6 +6,7 @@
 #include <iostream>
 #include <string>
 
+#include "compare_command.h"
 #include "film/image_io.h"
 #include "inspect_command.h"
 #include "interrupt.h"
@@ -94,6 +95,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc > 1 && std::string(argv[1]) == "compare") return whitted::cli::compare_main(argc - 1, argv + 1);
     try {
         return run(argc, argv);
     } catch (const std::bad_alloc&) {
