@@ -9,7 +9,7 @@ namespace whitted::flip {
 // The sRGB transfer function, decoding: an encoded value in [0, 1] → linear.
 double srgb_to_linear(double c);
 
-// Linear sRGB ↔ XYZ, the matrix of the sRGB primaries and D65 white (IEC 61966-2-1).
+// Linear sRGB ↔ XYZ with FLIP's matrix for the sRGB primaries and D65 white.
 glm::dvec3 linear_rgb_to_xyz(const glm::dvec3& rgb);
 glm::dvec3 xyz_to_linear_rgb(const glm::dvec3& xyz);
 
