@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/parallel_for.h"
+
 #include "compare/flip_colour.h"
 
 namespace whitted {
@@ -132,28 +134,31 @@ FeatureKernels feature_kernels(double ppd) {
 }
 
 std::vector<float> filter_separable(const std::vector<float>& plane, int w, int h, const Kernel& kx, const Kernel& ky) {
+    // Rows on several threads: each output value is computed alone, the same way on any thread.
     std::vector<float> rows(plane.size()), out(plane.size());
-    for (int y = 0; y < h; ++y) {
-        const float* in = &plane[std::size_t(y) * std::size_t(w)];
-        float* o = &rows[std::size_t(y) * std::size_t(w)];
+    const int workers = worker_count(0, std::size_t(h) / 16);
+    parallel_for(std::size_t(h), workers, [&](std::size_t y, int) {
+        const float* in = &plane[y * std::size_t(w)];
+        float* o = &rows[y * std::size_t(w)];
         for (int x = 0; x < w; ++x) {
             double s = 0.0;
             for (int i = -kx.radius; i <= kx.radius; ++i)
                 s += kx.weights[std::size_t(i + kx.radius)] * in[std::clamp(x + i, 0, w - 1)];
             o[x] = float(s);
         }
-    }
-    std::vector<double> acc(static_cast<std::size_t>(w));
-    for (int y = 0; y < h; ++y) {
-        std::fill(acc.begin(), acc.end(), 0.0);
+    });
+    std::vector<std::vector<double>> acc(static_cast<std::size_t>(workers), std::vector<double>(static_cast<std::size_t>(w)));
+    parallel_for(std::size_t(h), workers, [&](std::size_t y, int worker) {
+        std::vector<double>& sum = acc[std::size_t(worker)];
+        std::fill(sum.begin(), sum.end(), 0.0);
         for (int i = -ky.radius; i <= ky.radius; ++i) {
             const double wt = ky.weights[std::size_t(i + ky.radius)];
-            const float* in = &rows[std::size_t(std::clamp(y + i, 0, h - 1)) * std::size_t(w)];
-            for (int x = 0; x < w; ++x) acc[std::size_t(x)] += wt * in[x];
+            const float* in = &rows[std::size_t(std::clamp(int(y) + i, 0, h - 1)) * std::size_t(w)];
+            for (int x = 0; x < w; ++x) sum[std::size_t(x)] += wt * in[x];
         }
-        float* o = &out[std::size_t(y) * std::size_t(w)];
-        for (int x = 0; x < w; ++x) o[x] = float(acc[std::size_t(x)]);
-    }
+        float* o = &out[y * std::size_t(w)];
+        for (int x = 0; x < w; ++x) o[x] = float(sum[std::size_t(x)]);
+    });
     return out;
 }
 

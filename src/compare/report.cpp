@@ -88,14 +88,14 @@ std::string report_text(const CompareInputs& in, const CompareOptions& o, const 
                                    fmt("%.6g", e.max_b) + " in B");
     else
         s += line("max error", "0");
-    auto threshold = [&](const char* label, std::size_t n, float over, float allowed, float hard) {
-        std::string text = std::to_string(n) + " pixels (" + percent(n, e.pixels) + ") differ by more than " +
-                           fmt("%g", over) + "; " + label + " over " + fmt("%g", allowed) + "%";
-        if (std::isfinite(hard)) text += " or any difference over " + fmt("%g", hard);
+    auto threshold = [&](const char* verdict, std::size_t n, float over, float allowed, float hard) {
+        std::string text = std::to_string(n) + " pixels (" + percent(n, e.pixels) + ") by more than " + fmt("%g", over) +
+                           "; " + verdict + " above " + fmt("%g", allowed) + "% of the pixels";
+        if (std::isfinite(hard)) text += " or any difference above " + fmt("%g", hard);
         return text;
     };
-    s += line("warn", threshold("warns", e.warn_pixels, t.warn, t.warn_percent, t.hard_warn));
-    s += line("fail", threshold("fails", e.fail_pixels, t.fail, t.fail_percent, t.hard_fail));
+    s += line("over --warn", threshold("WARNING", e.warn_pixels, t.warn, t.warn_percent, t.hard_warn));
+    s += line("over --fail", threshold("FAILURE", e.fail_pixels, t.fail, t.fail_percent, t.hard_fail));
     const SsimStats& q = r.ssim;
     s += line("SSIM " + std::to_string(o.ssim.block) + "x" + std::to_string(o.ssim.block),
               "mean " + fmt("%.4f", q.mean) + ", worst " + fmt("%.4f", q.worst.ssim) + " in the block at " +
