@@ -1,12 +1,13 @@
 #include "compare_command.h"
 
-#include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <new>
 #include <string>
 
 #include <CLI/CLI.hpp>
+#include <unistd.h>
 
 #include "compare/colour_map.h"
 #include "compare/compare.h"
@@ -18,6 +19,20 @@ namespace whitted::cli {
 namespace {
 
 constexpr const char* kProgram = "whitted compare";
+
+// Ctrl-C, SIGTERM, SIGHUP, SIGQUIT: stop at once (exit 130), removing the --diff image's temporary
+// file if it is being written (the image itself is only ever renamed into place whole).
+extern "C" void on_signal(int) {
+    if (const char* partial = image_file_being_written()) unlink(partial);
+    _exit(130);
+}
+
+void install_signal_handlers() {
+    struct sigaction sa {};
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) sigaction(sig, &sa, nullptr);
+}
 
 // True if `a` and `b` name the same existing file.
 bool same_file(const std::string& a, const std::string& b) {
@@ -32,7 +47,7 @@ int run(int argc, char** argv) {
                  "says what each means and what to do about a difference.",
                  "whitted compare"};
     app.footer("Exit codes (idiff's): 0 PASS, 1 WARNING, 2 FAILURE, 3 the images differ in size, 4 an image cannot "
-               "be read or the --diff image written; 5 bad usage.");
+               "be read or the --diff image written; 5 bad usage; 130 interrupted.");
     std::string path_a, path_b, diff_path;
     CompareOptions o;
     bool json = false, quiet = false;
@@ -72,6 +87,7 @@ int run(int argc, char** argv) {
         const int code = app.exit(e);
         return code == 0 ? kComparePass : kCompareUsage;
     }
+    install_signal_handlers();
     if (!diff_path.empty()) {
         if (same_file(diff_path, path_a) || same_file(diff_path, path_b)) {
             std::cerr << kProgram << ": error: --diff " << diff_path << " would replace an image being compared\n";

@@ -5,7 +5,7 @@
 namespace whitted::cli {
 
 // Exit codes, idiff's: 0 pass, 1 warning, 2 failure, 3 the images differ in size, 4 an image
-// cannot be read (or the --diff image written, or memory ran out); 5 bad usage.
+// cannot be read (or the --diff image written, or memory ran out); 5 bad usage; 130 interrupted.
 constexpr int kComparePass = 0, kCompareWarn = 1, kCompareFail = 2, kCompareSize = 3, kCompareFile = 4,
               kCompareUsage = 5;
 
