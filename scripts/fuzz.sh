@@ -41,6 +41,7 @@ for t in "${targets[@]}"; do
     mkdir -p "$corpus"
     case "$t" in
         texture_fuzzer) seed="$seeds/images" max_len=400000 dict=() ;;
+        compare_image_fuzzer) seed="$root/fuzz/seeds/compare_image" max_len=400000 dict=() ;;
         *) seed="$seeds/scenes" max_len=65536 dict=(-dict="$root/fuzz/scene.dict") ;;
     esac
     echo "== $t: ${seconds}s"

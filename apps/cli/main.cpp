@@ -8,6 +8,7 @@
 #include <string>
 
 #include "accel/scene.h"
+#include "compare_command.h"
 #include "film/image_io.h"
 #include "inspect_command.h"
 #include "interrupt.h"
@@ -165,6 +166,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc > 1 && std::string(argv[1]) == "compare") return whitted::cli::compare_main(argc - 1, argv + 1);
     try {
         return run(argc, argv);
     } catch (const std::bad_alloc&) {
