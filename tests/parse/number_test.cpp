@@ -7,6 +7,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "parse_test_util.h"
 
@@ -159,6 +160,47 @@ TEST(ParseNumber, AgreesWithStrtodOnRandomLiterals) {
             EXPECT_EQ(n.value, float(expected)) << s;
             EXPECT_EQ(std::signbit(n.value), std::signbit(expected)) << s;
         }
+    }
+}
+
+// The parser reads most numbers straight from the text, not through parse_number: the same
+// values, whatever the white space, the sign, the place in the file (its last bytes too).
+TEST(ParseNumber, NumbersInAFileReadAsStrtodDoes) {
+    std::mt19937 rng(11);
+    const char* spaces[] = {" ", "  ", "\t", "\n", "\r\n", "\r", " \n    ", " # comment\n "};
+    std::string text = "mastersubgraph root [";
+    std::vector<double> expected;
+    for (int i = 0; i < 3000; ++i) {
+        text += " trans [ translate";
+        for (int k = 0; k < 3; ++k) {
+            std::string number = rng() % 3 ? "" : "-";
+            const int int_digits = int(rng() % 9), frac_digits = int(rng() % 10);
+            for (int d = 0; d < int_digits; ++d) number += char('0' + rng() % 10);
+            if (frac_digits > 0 || int_digits == 0 || rng() % 4 == 0) number += '.';
+            for (int d = 0; d < frac_digits; ++d) number += char('0' + rng() % 10);
+            if (int_digits + frac_digits == 0) number += '7';
+            text += spaces[rng() % 8];
+            text += number;
+            expected.push_back(std::strtod(number.c_str(), nullptr));
+        }
+        text += rng() % 2 ? " object cube [ ] ]" : "\nobject cube[]]";
+    }
+    text += "\n]";
+    const ParseResult r = parse(text);
+    ASSERT_TRUE(parse_test::parsed_ok(r));
+    const auto& children = r.scene.subgraphs.at(0).children;
+    ASSERT_EQ(children.size() * 3, expected.size());
+    for (std::size_t i = 0; i < children.size(); ++i)
+        for (int k = 0; k < 3; ++k)  // the identity times the translation: exact (but -0 becomes 0)
+            EXPECT_EQ(children[i].matrix[3][k], float(expected[3 * i + k])) << i << " " << k;
+    // The last bytes of the text: no room for eight at once.
+    const std::string before = std::string(parse_test::kRoot) + "background [ color 1 1 ";
+    for (const std::string tail : {"1", "-2.5", "0.125", "12345678", "3.", ".5", "-0"}) {
+        EXPECT_TRUE(error_at(parse(before + tail), 2, 24 + int(tail.size()), "unexpected end of file")) << tail;
+        const ParseResult closed = parse(before + tail + "]");
+        ASSERT_TRUE(parse_test::parsed_ok(closed)) << tail;
+        EXPECT_EQ(closed.scene.background.z, float(std::strtod(tail.c_str(), nullptr))) << tail;
+        EXPECT_EQ(std::signbit(closed.scene.background.z), tail[0] == '-') << tail;
     }
 }
 
