@@ -218,7 +218,13 @@ private:
         else if (errors_ == kMaxErrors + 1)
             first_unlisted_ = at;
     }
-    void error(const Token& at, std::string message) { error(loc(at), std::move(message)); }
+    void error(const Token& at, std::string message) {
+        if (errors_ > kMaxErrors) {  // past the first unlisted one (whose place is kept): only counted
+            ++errors_;
+            return;
+        }
+        error(loc(at), std::move(message));
+    }
     // Records an error and unwinds to the innermost block, which skips to its end.
     [[noreturn]] void fail(const SourceLoc& at, std::string message) {
         error(at, std::move(message));
@@ -433,33 +439,39 @@ private:
     // skipped and reading goes on.
     void unknown_keyword(const Token& keyword, std::string_view block, const char* expected,
                          const char* suggestions = nullptr) {
-        const bool is_number = parse_number(keyword.text).status != NumberStatus::Invalid;
-        const std::string where = " in " + std::string(block) + " block";
-        std::string skipped;
+        // What goes with it: its bracketed block, a word and its block, or the numbers after it.
+        enum { Nothing, Block, WordAndBlock, Numbers } skipped = Nothing;
+        Token word;
+        int count = 0;
         if (peek().kind == TokenKind::Open) {
             next();
             skip_to_block_end(keyword, "'" + std::string(keyword.text) + "'");
-            skipped = " and its bracketed block";
+            skipped = Block;
         } else if (peek().kind == TokenKind::Word && peek_second().kind == TokenKind::Open &&
                    parse_number(peek().text).status == NumberStatus::Invalid &&
                    !in_list(peek().text, expected)) {
             // `object cube [ … ]` where it does not belong: the word and its block go with it (one
             // error, not a second one for 'cube').
-            const Token word = next();
+            word = next();
             next();
             skip_to_block_end(word, "'" + std::string(word.text) + "'");
-            skipped = " and " + describe(word) + " with its bracketed block";
+            skipped = WordAndBlock;
         } else {
-            int count = 0;
             while (peek().kind == TokenKind::Word &&
                    parse_number(peek().text).status != NumberStatus::Invalid) {
                 next();
                 ++count;
             }
-            if (count > 0)
-                skipped = " and the " + std::to_string(count) +
-                          (count == 1 ? " number after it" : " numbers after it");
+            if (count > 0) skipped = Numbers;
         }
+        // Past the listed ones only counted, with no message made (a file of a million unknown
+        // words would spend seconds on them).
+        if (options_.lenient ? !lists_warning_at(keyword.line, keyword.col) : errors_ >= kMaxErrors) {
+            options_.lenient ? void(++warnings_) : error(keyword, std::string());
+            return;
+        }
+        const bool is_number = parse_number(keyword.text).status != NumberStatus::Invalid;
+        const std::string where = " in " + std::string(block) + " block";
         if (!options_.lenient) {
             if (is_number)
                 error(keyword, "unexpected number " + describe(keyword) + where +
@@ -475,9 +487,15 @@ private:
                                    "); use --lenient to skip unknown keywords");
             return;
         }
-        warn(loc(keyword), std::string("skipped ") +
-                               (is_number ? "unexpected number " : "unknown keyword ") +
-                               describe(keyword) + skipped + where + " (lenient mode)");
+        std::string what_else;
+        if (skipped == Block)
+            what_else = " and its bracketed block";
+        else if (skipped == WordAndBlock)
+            what_else = " and " + describe(word) + " with its bracketed block";
+        else if (skipped == Numbers)
+            what_else = " and the " + std::to_string(count) + (count == 1 ? " number after it" : " numbers after it");
+        warn(loc(keyword), std::string("skipped ") + (is_number ? "unexpected number " : "unknown keyword ") +
+                               describe(keyword) + what_else + where + " (lenient mode)");
     }
 
     // ---- the grammar ------------------------------------------------------------------------
