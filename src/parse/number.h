@@ -1,9 +1,7 @@
 #pragma once
 // Strict C floating-point literals for scene files (scene-format.md §1).
-#include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <string_view>
 
 namespace whitted {
@@ -40,33 +38,6 @@ struct PlainNumber {
 
 namespace number_detail {
 
-inline std::uint64_t load8(const char* p) {
-    std::uint64_t v;
-    std::memcpy(&v, p, 8);
-    return v;
-}
-
-// How many of the 8 bytes of v (first byte lowest) are ASCII digits before the first that is not.
-inline unsigned leading_digits(std::uint64_t v) {
-    constexpr std::uint64_t ones = 0x0101010101010101u;
-    // Zero in a byte that is a digit: high nibble 3, and low nibble + 6 still below 16 (no carry
-    // leaves a byte on either side).
-    const std::uint64_t z = ((v & (ones * 0xF0)) ^ (ones * 0x30)) | (((v & (ones * 0x0F)) + ones * 0x06) & (ones * 0xF0));
-    const std::uint64_t nonzero = (((z & (ones * 0x7F)) + ones * 0x7F) | z) & (ones * 0x80);
-    return nonzero ? unsigned(std::countr_zero(nonzero)) / 8 : 8;
-}
-
-// The value of the first k (1-8) bytes of v, all digits (Lemire's eight digits at once: the
-// digits moved to the top, zeros before them).
-inline std::uint64_t digits_value(std::uint64_t v, unsigned k) {
-    constexpr std::uint64_t ones = 0x0101010101010101u;
-    v = (v - ones * 0x30) << (8 * (8 - k));  // a digit never borrows; what follows is shifted out
-    v = v * 10 + (v >> 8);
-    constexpr std::uint64_t mask = 0x000000FF000000FFu;
-    constexpr std::uint64_t mul1 = 100 + (std::uint64_t(1000000) << 32), mul2 = 1 + (std::uint64_t(10000) << 32);
-    return (((v & mask) * mul1) + (((v >> 16) & mask) * mul2)) >> 32;
-}
-
 inline PlainNumber plain_number(bool negative, std::uint64_t mantissa, std::size_t decimals, const char* end) {
     PlainNumber r;
     const double value = static_cast<double>(mantissa) / kExactPowersOfTen[decimals];
@@ -86,29 +57,6 @@ inline PlainNumber scan_plain_number(const char* p, const char* const end) {
     using namespace number_detail;
     const bool negative = p != end && *p == '-';
     p += negative;
-    // Eight bytes at a time where the text goes on that far (no branch per digit).
-    if (end - p >= 8) {
-        const std::uint64_t head = load8(p);
-        const unsigned a = leading_digits(head);
-        if (a < 8) {
-            const std::uint64_t whole = a ? digits_value(head, a) : 0;
-            if (p[a] != '.') {
-                if (a == 0) return {p, false, 0};
-                return plain_number(negative, whole, 0, p + a);
-            }
-            const char* const decimals_at = p + a + 1;
-            if (end - decimals_at >= 8) {
-                const std::uint64_t tail = load8(decimals_at);
-                const unsigned b = leading_digits(tail);
-                if (b < 8) {
-                    if (a + b == 0) return {decimals_at, false, 0};
-                    const std::uint64_t mantissa = b ? whole * std::uint64_t(kExactPowersOfTen[b]) + digits_value(tail, b) : whole;
-                    return plain_number(negative, mantissa, b, decimals_at + b);
-                }
-            }
-        }
-    }
-    // Near the end of the text, or long: one digit at a time.
     std::uint64_t mantissa = 0;
     auto digits_from = [&](const char* q) {  // up to the first non-digit
         for (; q != end; ++q) {
