@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string_view>
 
 namespace whitted {
@@ -72,6 +73,20 @@ inline constexpr std::array<Keyword, kTableSize> kTable = make_table();
 
 inline constexpr std::size_t kLongest = 14;  // mastersubgraph
 
+// a[0..n) == b[0..n) for n <= 16, by two loads of each side that may overlap, never past n.
+inline bool equal_short(const char* a, const char* b, std::size_t n) {
+    const auto same = [&](std::size_t at, auto width) {
+        decltype(width) x, y;
+        std::memcpy(&x, a + at, sizeof x);
+        std::memcpy(&y, b + at, sizeof y);
+        return x == y;
+    };
+    if (n >= 8) return same(0, std::uint64_t()) && same(n - 8, std::uint64_t());
+    if (n >= 4) return same(0, std::uint32_t()) && same(n - 4, std::uint32_t());
+    if (n >= 2) return same(0, std::uint16_t()) && same(n - 2, std::uint16_t());
+    return n == 0 || a[0] == b[0];
+}
+
 }  // namespace keyword_detail
 
 // The keyword spelled exactly `word` (case-sensitive), or Keyword::None.
@@ -80,10 +95,7 @@ inline Keyword find_keyword(std::string_view word) {
     if (word.empty() || word.size() > kLongest) return Keyword::None;
     const Keyword k = kTable[hash(word, kSeed)];
     const std::string_view spelling = kSpelling[std::size_t(k)];
-    if (spelling.size() != word.size()) return Keyword::None;
-    for (std::size_t i = 0; i < word.size(); ++i)  // short: no call to memcmp
-        if (spelling[i] != word[i]) return Keyword::None;
-    return k;
+    return spelling.size() == word.size() && equal_short(spelling.data(), word.data(), word.size()) ? k : Keyword::None;
 }
 
 }  // namespace whitted
