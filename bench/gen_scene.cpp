@@ -3,6 +3,7 @@
 // scene for POV-Ray 3.7, so that both renderers see identical geometry, lights and camera.
 //
 //   gen_scene --count 1000000 -o grid1m.sc [--pov grid1m.pov]
+//   gen_scene --count 10000 --flat -o flat10k.sc     # every object written out: a parser benchmark
 //
 // Objects: the four shapes in turn, each rotated and scaled in its 1×1 cell, matte or mirror.
 // The camera looks down at the grid from the south; one point light, one directional light.
@@ -67,7 +68,7 @@ struct Layout {
     glm::vec3 light() const { return {0.3f * width(), 2.0f * std::max(width(), depth()), 0.4f * depth()}; }
 };
 
-void write_sc(std::ostream& out, const Layout& L, const std::vector<Cell>& cells, long count) {
+void write_sc(std::ostream& out, const Layout& L, const std::vector<Cell>& cells, long count, bool flat) {
     const glm::vec3 e = L.eye(), f = L.focus(), l = L.light();
     out << "# " << count << " objects: a " << 10 * L.blocks_x << " x " << 10 * L.blocks_z
         << " grid, written by bench/gen_scene\n";
@@ -77,14 +78,24 @@ void write_sc(std::ostream& out, const Layout& L, const std::vector<Cell>& cells
     out << "light [ type point  position " << l.x << " " << l.y << " " << l.z << "  color 0.8 0.8 0.8 ]\n";
     out << "light [ type directional  direction -0.3 -1 -0.5  color 0.3 0.3 0.3 ]\n";
     out << "light [ ambient 0.2 0.2 0.2 ]\n\n";
-    out << "mastersubgraph block [\n";
-    for (const Cell& c : cells) {
-        out << "  trans [ translate " << c.x << " " << 0.5f * c.sy << " " << c.z << "  rotate 1 1 0 " << c.angle
+    // One object's trans block, its cell moved by (dx, dz).
+    auto object = [&](const Cell& c, float dx, float dz) {
+        out << "  trans [ translate " << c.x + dx << " " << 0.5f * c.sy << " " << c.z + dz << "  rotate 1 1 0 " << c.angle
             << "  scale " << c.sx << " " << c.sy << " " << c.sz << "\n    object " << kShapes[c.shape] << " [ diffuse "
             << c.colour.x << " " << c.colour.y << " " << c.colour.z << "  ambient 0.2 0.2 0.2  specular 0.4 0.4 0.4  shine 30";
         if (c.mirror) out << "  reflect 0.5 0.5 0.5";
         out << " ] ]\n";
+    };
+    if (flat) {  // the same objects, each written out in root: text in proportion to the count
+        out << "mastersubgraph root [\n";
+        for (int bx = 0; bx < L.blocks_x; ++bx)
+            for (int bz = 0; bz < L.blocks_z; ++bz)
+                for (const Cell& c : cells) object(c, 10 * bx - 0.5f * L.width(), 10 * bz - 0.5f * L.depth());
+        out << "]\n";
+        return;
     }
+    out << "mastersubgraph block [\n";
+    for (const Cell& c : cells) object(c, 0, 0);
     out << "]\n\nmastersubgraph root [\n";
     for (int bx = 0; bx < L.blocks_x; ++bx)
         for (int bz = 0; bz < L.blocks_z; ++bz)
@@ -138,9 +149,11 @@ int main(int argc, char** argv) {
     CLI::App app{"gen_scene: writes a grid of N objects (N a multiple of 100) as a .sc scene, and optionally as POV-Ray"};
     long count = 10000;
     std::string output, pov;
+    bool flat = false;
     float aspect = 4.0f / 3.0f;
     app.add_option("-n,--count", count, "Number of objects (a multiple of 100)")->check(CLI::Range(100L, 100000000L));
     app.add_option("-o,--output", output, "The .sc file to write")->required();
+    app.add_flag("--flat", flat, "Write every object out in root instead of instancing one block (a parser benchmark)");
     app.add_option("--pov", pov, "Also write the scene for POV-Ray 3.7 to this file");
     app.add_option("--aspect", aspect, "Image aspect ratio the POV-Ray camera is set up for")->check(CLI::PositiveNumber);
     CLI11_PARSE(app, argc, argv);
@@ -160,7 +173,7 @@ int main(int argc, char** argv) {
         std::cerr << "gen_scene: cannot write " << output << "\n";
         return 1;
     }
-    write_sc(sc, layout, cells, count);
+    write_sc(sc, layout, cells, count, flat);
     if (!pov.empty()) {
         std::ofstream p(pov);
         if (!p) {

@@ -8,18 +8,20 @@ namespace whitted::cli {
 namespace {
 
 // Warnings printed before the rest are only counted: a file with 100,000 stray brackets
-// should not bury its one real message.
-constexpr int kMaxWarningsShown = 50;
+// should not bury its one real message. (The parser keeps only as many of its own.)
+constexpr std::size_t kMaxWarningsShown = 50;
+static_assert(kMaxWarningsShown <= kMaxWarningsListed, "the parser keeps fewer warnings than are shown");
 
 }  // namespace
 
 int report_load(const LoadResult& loaded, const RenderOptions& o, const char* program, const char* limit) {
-    int warnings = 0;
+    std::size_t warnings = 0;
     std::vector<Diagnostic> diagnostics = loaded.diagnostics;
     if (o.settings.mode == "path")  // warnings that hold only there (§9.2)
         diagnostics.insert(diagnostics.end(), loaded.path_warnings.begin(), loaded.path_warnings.end());
     for (const Diagnostic& d : diagnostics)
         if (d.severity == Severity::Error || ++warnings <= kMaxWarningsShown) std::cerr << d.str() << "\n";
+    warnings += loaded.unlisted_warnings;  // the parser's own past those it listed, which are all shown
     if (warnings > kMaxWarningsShown)
         std::cerr << program << ": " << warnings - kMaxWarningsShown << " more warnings not shown\n";
     if (loaded.cancelled && limit) {

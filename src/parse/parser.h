@@ -11,6 +11,10 @@
 
 namespace whitted {
 
+// Warnings listed in ParseResult::diagnostics, the first in position order; the rest are only
+// counted (front ends print this many and the count of the rest).
+constexpr std::size_t kMaxWarningsListed = 50;
+
 struct ParseOptions {
     // Skip unknown keywords (with the numbers or bracketed block that follow) and unknown
     // object types (with their block), each with a warning, instead of failing.
@@ -18,9 +22,10 @@ struct ParseOptions {
     // The scene time t of `velocity` and `angularrate` (scene-format.md §9.4): 0 is the still image.
     float time = 0;
     // parse_scene_file reads no more than this (a scene of a million objects written out one by
-    // one is about 100 MB; tokens take up to 32 bytes per byte of text).
+    // one is about 170 MB).
     std::size_t max_file_bytes = std::size_t(256) << 20;
-    // parse_scene_file gives up reading when this is set (by another thread or a signal handler).
+    // Reading and parsing give up when this is set (by another thread or a signal handler): the
+    // parse looks at it after every 64 KiB of text.
     const std::atomic<bool>* cancel = nullptr;
 };
 
@@ -28,9 +33,11 @@ struct ParseResult {
     SceneDescription scene;            // meaningful only when ok()
     // Warnings and errors ordered by position (the parser recovers after an error and goes on:
     // every problem of the file, up to a limit, then one error giving the count of the rest).
+    // At most kMaxWarningsListed warnings, the first in position order.
     std::vector<Diagnostic> diagnostics;
+    std::size_t unlisted_warnings = 0;    // warnings past those, only counted
     bool unreadable = false;              // the file itself could not be read (an I/O failure)
-    bool cancelled = false;               // ParseOptions::cancel was set while the file was read
+    bool cancelled = false;               // ParseOptions::cancel was set while the file was read or parsed
     bool ok() const { return !has_errors(diagnostics); }
 };
 

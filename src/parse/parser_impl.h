@@ -14,6 +14,7 @@
 
 #include "parse/binary_sniff.h"
 #include "parse/falloff.h"
+#include "parse/keywords.h"
 #include "parse/lexer.h"
 #include "parse/number.h"
 #include "parse/scene_checks.h"
@@ -26,11 +27,14 @@ namespace whitted::parse_detail {
 // skips to its own end, and parsing goes on, so one run reports every problem of the file.
 // Unwinding keeps the recursive-descent code straight.
 struct ParseStop {};
-// Thrown when nothing more can be read (end of file inside a block): ends the parse.
+// Thrown when nothing more can be read (end of file inside a block) or the parse is cancelled:
+// ends the parse.
 struct ParseAbort {};
 
 // Errors listed in full; past this many, only counted (a cascade helps nobody).
 constexpr int kMaxErrors = 20;
+// The cancel flag is looked at after each this many bytes of text (a fraction of a millisecond).
+constexpr std::size_t kCancelCheckBytes = std::size_t(64) << 10;
 
 // The keywords each block accepts, for "expected one of" hints.
 constexpr const char* kTopKeywords = "background, camera, light, mastersubgraph";
@@ -118,28 +122,37 @@ public:
                 error(SourceLoc{file_, 1, 1}, "this is not a scene file (it looks like " + *kind + ")");
                 throw ParseAbort{};
             }
-            tokens_ = tokenize(text_);
             parse_file();
         } catch (const ParseAbort&) {
             // Recorded already; nothing after it can be read.
         }
+        if (cancelled_) {  // no verdict on a file not read to its end
+            result.cancelled = true;
+            return result;
+        }
         if (!aborted_) check_whole_file();
         finish_diagnostics();
         result.diagnostics = std::move(diags_);
+        result.unlisted_warnings = warnings_ - listed_warnings_;
         if (!has_errors(result.diagnostics)) result.scene = std::move(scene_);
         return result;
     }
 
 private:
     std::string_view text_;
-    std::vector<Token> tokens_;
-    size_t pos_ = 0;
+    Lexer lexer_{text_};
+    // The next token (peek()) once it has been read, and then possibly the one after it.
+    Token current_, ahead_;
+    bool has_current_ = false, has_ahead_ = false;
+    std::size_t next_cancel_check_ = 0;  // offset in the text
     const std::string& file_;
     ParseOptions options_;
     std::vector<Diagnostic> diags_;
     int errors_ = 0;            // recorded or not
     SourceLoc first_unlisted_;  // of the first error past kMaxErrors
-    bool aborted_ = false;
+    std::size_t warnings_ = 0, listed_warnings_ = 0;  // given, and kept in diags_
+    std::pair<int, int> last_listed_at_;              // line, col of the last listed once there are enough
+    bool aborted_ = false, cancelled_ = false;
     SceneDescription scene_;
     SourceLoc camera_up_loc_, camera_view_loc_, camera_aperture_loc_;  // line 0 until written
     std::unordered_map<std::string, int> subgraph_index_;  // for duplicates, without O(n²)
@@ -152,12 +165,49 @@ private:
     std::optional<SubgraphDesc> implicit_root_;  // Brown/Tufts: the top-level trans blocks
 
     // ---- tokens and diagnostics -------------------------------------------------------------
+    // Tokens are read when asked for, with a lookahead of two, so they are values: a reference
+    // into current_ changes meaning at the next next(). End repeats forever.
 
-    const Token& peek() const { return tokens_[pos_]; }
-    const Token& next() {
-        const Token& t = tokens_[pos_];
-        if (t.kind != TokenKind::End) ++pos_;  // End repeats forever: no reading past the end
+    // Whether the cancel flag was looked at recently enough (else: look, and end the parse if set).
+    bool cancel_checked() const { return lexer_.offset() < next_cancel_check_; }
+    void check_cancel() {
+        if (cancel_checked()) return;
+        if (options_.cancel && options_.cancel->load(std::memory_order_relaxed)) {
+            cancelled_ = true;
+            throw ParseAbort{};
+        }
+        next_cancel_check_ = lexer_.offset() + kCancelCheckBytes;
+    }
+    Token lex() {
+        check_cancel();
+        return lexer_.next();
+    }
+    const Token& peek() {
+        if (!has_current_) {
+            current_ = lex();
+            has_current_ = true;
+        }
+        return current_;
+    }
+    // The token after peek().
+    const Token& peek_second() {
+        if (!has_ahead_) {
+            ahead_ = peek().kind == TokenKind::End ? current_ : lex();
+            has_ahead_ = true;
+        }
+        return ahead_;
+    }
+    Token next() {
+        const Token t = peek();
+        advance();
         return t;
+    }
+    // Past peek().
+    void advance() {
+        if (peek().kind == TokenKind::End) return;
+        if (has_ahead_) current_ = ahead_;
+        has_current_ = has_ahead_;
+        has_ahead_ = false;
     }
     SourceLoc loc(const Token& t) const { return {file_, t.line, t.col}; }
 
@@ -168,7 +218,13 @@ private:
         else if (errors_ == kMaxErrors + 1)
             first_unlisted_ = at;
     }
-    void error(const Token& at, std::string message) { error(loc(at), std::move(message)); }
+    void error(const Token& at, std::string message) {
+        if (errors_ > kMaxErrors) {  // past the first unlisted one (whose place is kept): only counted
+            ++errors_;
+            return;
+        }
+        error(loc(at), std::move(message));
+    }
     // Records an error and unwinds to the innermost block, which skips to its end.
     [[noreturn]] void fail(const SourceLoc& at, std::string message) {
         error(at, std::move(message));
@@ -177,8 +233,34 @@ private:
     [[noreturn]] void fail(const Token& at, std::string message) {
         fail(loc(at), std::move(message));
     }
+    // Only the kMaxWarningsListed first warnings in position order (ties in the order given) are
+    // kept, the rest counted, so that a file of a million stray brackets costs no memory for them.
     void warn(const SourceLoc& at, std::string message) {
+        ++warnings_;
+        if (!lists_warning_at(at.line, at.col)) return;
+        if (listed_warnings_ == kMaxWarningsListed) {  // it takes the place of the last one
+            diags_.erase(diags_.begin() + static_cast<std::ptrdiff_t>(last_listed_warning()));
+            --listed_warnings_;
+        }
         diags_.push_back({Severity::Warning, at, std::move(message)});
+        if (++listed_warnings_ == kMaxWarningsListed) {
+            const SourceLoc& last = diags_[last_listed_warning()].loc;
+            last_listed_at_ = {last.line, last.col};
+        }
+    }
+    // Whether a warning at line:col would be listed.
+    bool lists_warning_at(int line, int col) const {
+        return listed_warnings_ < kMaxWarningsListed || std::pair(line, col) < last_listed_at_;
+    }
+    // The listed warning that comes last in position order (of those at one position, the last given).
+    std::size_t last_listed_warning() const {
+        std::size_t last = diags_.size();
+        for (std::size_t i = 0; i < diags_.size(); ++i)
+            if (diags_[i].severity == Severity::Warning &&
+                (last == diags_.size() ||
+                 std::pair(diags_[i].loc.line, diags_[i].loc.col) >= std::pair(diags_[last].loc.line, diags_[last].loc.col)))
+                last = i;
+        return last;
     }
 
     // Position order (whole-file checks come last otherwise), then the count of the unlisted.
@@ -193,15 +275,28 @@ private:
     }
 
     // A '[' that opens no block: the reference ignores it wherever it appears (spec §1), so we do
-    // too, with a warning, since it often means the brackets around it do not match.
-    void skip_stray_opens(const std::string& where) {
-        while (peek().kind == TokenKind::Open)
-            warn(loc(next()), "'[' " + where + " opens no block and is ignored ('[' belongs after "
-                              "a block keyword such as 'trans' or 'object TYPE')");
+    // too, with a warning, since it often means the brackets around it do not match. `where()`
+    // says where it is; it is called only for a warning that is listed.
+    template <class Where>
+    void skip_stray_opens(Where&& where) {
+        if (peek().kind == TokenKind::Open) [[unlikely]]
+            warn_stray_opens(where);
+    }
+    template <class Where>
+    [[gnu::noinline]] void warn_stray_opens(Where& where) {
+        while (peek().kind == TokenKind::Open) {
+            const Token t = next();
+            if (lists_warning_at(t.line, t.col))
+                warn(loc(t), "'[' " + std::string(where()) +
+                                 " opens no block and is ignored ('[' belongs after "
+                                 "a block keyword such as 'trans' or 'object TYPE')");
+            else
+                ++warnings_;
+        }
     }
 
-    [[noreturn]] void fail_unclosed(const Token& opener, const std::string& block) {
-        error(peek(), "unexpected end of file: " + block + " block opened at " + pos_str(opener) +
+    [[noreturn]] void fail_unclosed(const Token& opener, std::string_view block) {
+        error(peek(), "unexpected end of file: " + std::string(block) + " block opened at " + pos_str(opener) +
                           " is not closed (missing ']')");
         aborted_ = true;
         throw ParseAbort{};
@@ -232,14 +327,21 @@ private:
     // ---- values -----------------------------------------------------------------------------
 
     float number(const Token& keyword) {
-        skip_stray_opens("among the numbers of '" + std::string(keyword.text) + "'");
+        float value;
+        if (!has_current_ && cancel_checked() && lexer_.read_plain_number(value)) return value;
+        skip_stray_opens([&] { return "among the numbers of '" + std::string(keyword.text) + "'"; });
         const Token& t = peek();
-        const std::string what =
-            "expected a number for '" + std::string(keyword.text) + "', found ";
-        if (t.kind != TokenKind::Word) fail(t, what + describe(t));
+        if (t.kind != TokenKind::Word) fail_not_number(keyword, t);
         const NumberParse n = parse_number(t.text);
-        switch (n.status) {
-            case NumberStatus::Invalid: fail(t, what + describe(t));
+        if (n.status != NumberStatus::Ok) [[unlikely]]
+            number_problem(keyword, t, n.status);
+        advance();
+        return n.value;
+    }
+    // A number that is not Ok: an error (thrown), or a warning.
+    void number_problem(const Token& keyword, const Token& t, NumberStatus status) {
+        switch (status) {
+            case NumberStatus::Invalid: fail_not_number(keyword, t);
             case NumberStatus::OutOfRange:
                 fail(t, "number " + describe(t) + " for '" + std::string(keyword.text) +
                             "' is out of range");
@@ -248,8 +350,10 @@ private:
                 break;
             case NumberStatus::Ok: break;
         }
-        next();
-        return n.value;
+    }
+
+    [[noreturn]] void fail_not_number(const Token& keyword, const Token& t) {
+        fail(t, "expected a number for '" + std::string(keyword.text) + "', found " + describe(t));
     }
 
     glm::vec3 vec3(const Token& keyword) {
@@ -260,8 +364,8 @@ private:
     }
 
     // A name or file name after `keyword` (any word).
-    const Token& word(const Token& keyword, const char* what) {
-        skip_stray_opens("after '" + std::string(keyword.text) + "'");
+    Token word(const Token& keyword, const char* what) {
+        skip_stray_opens([&] { return "after '" + std::string(keyword.text) + "'"; });
         const Token& t = peek();
         if (t.kind != TokenKind::Word)
             fail(t, "expected " + std::string(what) + " after '" + std::string(keyword.text) +
@@ -286,24 +390,24 @@ private:
         if (peek().kind == TokenKind::Open) next();
     }
 
-    // The next keyword of a block, or nullptr at its closing `]`.
-    const Token* next_in_block(const Token& opener, const std::string& block) {
-        skip_stray_opens("in " + block + " block opened at " + pos_str(opener));
-        const Token& t = next();
-        switch (t.kind) {
-            case TokenKind::Close: return nullptr;
+    // The next keyword of a block into `keyword`, or false at its closing `]`.
+    bool next_in_block(const Token& opener, std::string_view block, Token& keyword) {
+        skip_stray_opens([&] { return "in " + std::string(block) + " block opened at " + pos_str(opener); });
+        keyword = next();
+        switch (keyword.kind) {
+            case TokenKind::Close: return false;
             case TokenKind::End: fail_unclosed(opener, block);
             case TokenKind::Open:  // skipped above
             case TokenKind::Word: break;
         }
-        return &t;
+        return true;
     }
 
     // Skips to the `]` that closes a block whose opening (if any) is already consumed.
-    void skip_to_block_end(const Token& opener, const std::string& block) {
+    void skip_to_block_end(const Token& opener, std::string_view block) {
         int depth = 1;
         while (depth > 0) {
-            const Token& t = next();
+            const Token t = next();
             if (t.kind == TokenKind::End) fail_unclosed(opener, block);
             if (t.kind == TokenKind::Open) ++depth;
             if (t.kind == TokenKind::Close) --depth;
@@ -313,10 +417,11 @@ private:
     // Reads a block's keywords up to its `]`, handing each to `on_keyword`. After an error in
     // one of them, the rest of the block is skipped (error recovery); returns false then.
     template <class OnKeyword>
-    bool read_block(const Token& opener, const std::string& block, OnKeyword&& on_keyword) {
-        while (const Token* k = next_in_block(opener, block)) {
+    bool read_block(const Token& opener, std::string_view block, OnKeyword&& on_keyword) {
+        Token k;
+        while (next_in_block(opener, block, k)) {
             try {
-                on_keyword(*k);
+                on_keyword(k);
             } catch (const ParseStop&) {
                 if (peek().kind == TokenKind::End) {  // the error was the end of the file: said
                     aborted_ = true;
@@ -332,36 +437,41 @@ private:
     // An unknown keyword: in strict mode an error (with "did you mean" when a valid word is close),
     // in lenient mode a warning; either way the numbers or the bracketed block that follow it are
     // skipped and reading goes on.
-    void unknown_keyword(const Token& keyword, const std::string& block, const char* expected,
+    void unknown_keyword(const Token& keyword, std::string_view block, const char* expected,
                          const char* suggestions = nullptr) {
-        const bool is_number = parse_number(keyword.text).status != NumberStatus::Invalid;
-        const std::string where = " in " + block + " block";
-        std::string skipped;
+        // What goes with it: its bracketed block, a word and its block, or the numbers after it.
+        enum { Nothing, Block, WordAndBlock, Numbers } skipped = Nothing;
+        Token word;
+        int count = 0;
         if (peek().kind == TokenKind::Open) {
             next();
             skip_to_block_end(keyword, "'" + std::string(keyword.text) + "'");
-            skipped = " and its bracketed block";
-        } else if (peek().kind == TokenKind::Word && pos_ + 1 < tokens_.size() &&
-                   tokens_[pos_ + 1].kind == TokenKind::Open &&
+            skipped = Block;
+        } else if (peek().kind == TokenKind::Word && peek_second().kind == TokenKind::Open &&
                    parse_number(peek().text).status == NumberStatus::Invalid &&
                    !in_list(peek().text, expected)) {
             // `object cube [ … ]` where it does not belong: the word and its block go with it (one
             // error, not a second one for 'cube').
-            const Token& word = next();
+            word = next();
             next();
             skip_to_block_end(word, "'" + std::string(word.text) + "'");
-            skipped = " and " + describe(word) + " with its bracketed block";
+            skipped = WordAndBlock;
         } else {
-            int count = 0;
             while (peek().kind == TokenKind::Word &&
                    parse_number(peek().text).status != NumberStatus::Invalid) {
                 next();
                 ++count;
             }
-            if (count > 0)
-                skipped = " and the " + std::to_string(count) +
-                          (count == 1 ? " number after it" : " numbers after it");
+            if (count > 0) skipped = Numbers;
         }
+        // Past the listed ones only counted, with no message made (a file of a million unknown
+        // words would spend seconds on them).
+        if (options_.lenient ? !lists_warning_at(keyword.line, keyword.col) : errors_ >= kMaxErrors) {
+            options_.lenient ? void(++warnings_) : error(keyword, std::string());
+            return;
+        }
+        const bool is_number = parse_number(keyword.text).status != NumberStatus::Invalid;
+        const std::string where = " in " + std::string(block) + " block";
         if (!options_.lenient) {
             if (is_number)
                 error(keyword, "unexpected number " + describe(keyword) + where +
@@ -377,20 +487,26 @@ private:
                                    "); use --lenient to skip unknown keywords");
             return;
         }
-        warn(loc(keyword), std::string("skipped ") +
-                               (is_number ? "unexpected number " : "unknown keyword ") +
-                               describe(keyword) + skipped + where + " (lenient mode)");
+        std::string what_else;
+        if (skipped == Block)
+            what_else = " and its bracketed block";
+        else if (skipped == WordAndBlock)
+            what_else = " and " + describe(word) + " with its bracketed block";
+        else if (skipped == Numbers)
+            what_else = " and the " + std::to_string(count) + (count == 1 ? " number after it" : " numbers after it");
+        warn(loc(keyword), std::string("skipped ") + (is_number ? "unexpected number " : "unknown keyword ") +
+                               describe(keyword) + what_else + where + " (lenient mode)");
     }
 
     // ---- the grammar ------------------------------------------------------------------------
 
     void parse_file() {
-        if (tokens_.size() == 1)
+        if (peek().kind == TokenKind::End)
             fail_empty();
         while (true) {
-            skip_stray_opens("at top level");
+            skip_stray_opens([] { return "at top level"; });
             if (peek().kind == TokenKind::End) break;
-            const Token& t = next();
+            const Token t = next();
             try {
                 parse_top_level(t);
             } catch (const ParseStop&) {
@@ -423,18 +539,14 @@ private:
             error(t, "unexpected ']' at top level: no block is open");
             return;
         }
-        if (t.text == "background")
-            parse_background(t);
-        else if (t.text == "camera")
-            parse_camera(t);
-        else if (t.text == "light")
-            parse_light(t);
-        else if (t.text == "mastersubgraph")
-            parse_mastersubgraph(t);
-        else if (t.text == "trans")
-            parse_top_level_trans(t);
-        else
-            unknown_keyword(t, "top-level", kTopKeywords, kTopWords);
+        switch (find_keyword(t.text)) {
+            case Keyword::Background: return parse_background(t);
+            case Keyword::Camera: return parse_camera(t);
+            case Keyword::Light: return parse_light(t);
+            case Keyword::Mastersubgraph: return parse_mastersubgraph(t);
+            case Keyword::Trans: return parse_top_level_trans(t);
+            default: return unknown_keyword(t, "top-level", kTopKeywords, kTopWords);
+        }
     }
 
     // After an error outside any block (a mastersubgraph without a name): on to the next word
@@ -473,7 +585,7 @@ private:
     // Skips the block of an object that is not drawn, with a warning.
     void skip_object(const Token& opener, const Token& type, const std::string& why);
     void parse_object(const Token& opener, TransDesc& trans);
-    void parse_material(const Token& k, MaterialDesc& mat);
+    void parse_material(const Token& k, Keyword w, MaterialDesc& mat);
 
     // ---- checks that need the whole file ----------------------------------------------------
 

@@ -23,6 +23,7 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     result.stats.parse_seconds = parse_seconds;
     result.unreadable = parsed.unreadable;
     result.diagnostics = std::move(parsed.diagnostics);
+    result.unlisted_warnings = parsed.unlisted_warnings;
     result.stats.dialect = parsed.scene.dialect;
     result.camera = parsed.scene.camera;
     if (has_errors(result.diagnostics) || cancelled()) return result;
@@ -90,7 +91,16 @@ LoadResult load_scene(const std::string& path, const LoadOptions& options) {
 
 LoadResult load_scene_text(const std::string& text, const std::string& path, const LoadOptions& options) {
     auto t = Clock::now();
-    ParseResult parsed = parse_scene_text(text, path, {options.lenient, options.time});
+    ParseOptions parse_options;
+    parse_options.lenient = options.lenient;
+    parse_options.time = options.time;
+    parse_options.cancel = options.cancel;
+    ParseResult parsed = parse_scene_text(text, path, parse_options);
+    if (parsed.cancelled) {
+        LoadResult result;
+        result.cancelled = true;
+        return result;
+    }
     return finish(std::move(parsed), options, since(t));
 }
 

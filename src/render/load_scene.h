@@ -38,6 +38,7 @@ struct LoadStats {
 struct LoadResult {
     std::shared_ptr<const Scene> scene;     // null when the load failed
     std::vector<Diagnostic> diagnostics;     // warnings and errors, in order
+    std::size_t unlisted_warnings = 0;       // the parser's warnings past kMaxWarningsListed, only counted
     std::vector<MissingTexture> missing_textures;  // also reported in diagnostics
     std::vector<Diagnostic> path_warnings;   // warnings that hold only in --mode path (§9.2)
     TextureFiles texture_files;  // with LoadOptions::textures.keep_files: the bytes of each texture file
