@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "cs1230/detect.h"
 #include "film/image_io.h"
 #include "integrator/render_mode.h"
 #include "run_limits.h"
@@ -87,6 +88,10 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
     app.add_flag("--untrusted", o.untrusted,
                  "For scene files you did not write: textures only from the scene's folder and --texture-path, and "
                  "lower limits on file sizes, objects, textures, memory (1G) and time (60 s) (see the README)");
+    app.add_option("--cs1230-stage", o.cs1230_stage,
+                   "For Brown CSCI 1230 JSON scenes: draw them as the course's Intersect project (directional lights, "
+                   "no shadows, reflections or textures) or Illuminate (everything)")
+        ->check(CLI::IsMember({"illuminate", "intersect"}));
     app.add_flag("--lenient", o.lenient, "Skip unknown keywords and object types with a warning instead of failing");
     app.add_flag("-q,--quiet", o.quiet, "No progress line");
     app.add_flag("--stats", o.stats, "Print timings and ray counts");
@@ -135,9 +140,15 @@ int parse_render_options(CLI::App& app, RenderOptions& o, int argc, char** argv,
         int code = app.exit(e);
         return code == 0 ? -1 : kExitUsage;
     }
+    const bool given_depth = app.get_option("--max-depth")->count() > 0;
+    if (!o.scene_path.empty() && cs1230::is_json_scene_file(o.scene_path)) {  // §9.5: the course's image and depth
+        if (app.get_option("--width")->count() == 0) o.width = 1024;
+        if (app.get_option("--height")->count() == 0) o.height = 768;
+        if (!given_depth) o.max_depth = 4;
+    }
     if (o.mode_name == "path") {  // §9.2: a path tracer's defaults, where the user gave none
         if (app.get_option("--spp")->count() == 0) o.spp = 64;
-        if (app.get_option("--max-depth")->count() == 0) o.max_depth = 64;
+        if (!given_depth) o.max_depth = 64;
     }
     const CLI::Option* timeout = app.get_option_no_throw("--timeout");
     if (std::string problem = finish_render_options(o, timeout && timeout->count() > 0); !problem.empty()) {
@@ -155,6 +166,7 @@ LoadOptions load_options(const RenderOptions& o, const std::atomic<bool>* cancel
     lo.time = o.time;
     lo.textures.search_dirs = o.texture_dirs;
     lo.textures.missing = o.missing == "checker" ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
+    lo.cs1230_stage = cs1230::parse_stage(o.cs1230_stage).value_or(cs1230::Stage::Illuminate);
     if (o.max_memory > 0) lo.max_memory = o.max_memory - std::min(o.max_memory, o.for_image);
     if (o.untrusted) apply_untrusted(lo);
     return lo;
@@ -164,7 +176,8 @@ RenderJob render_job(const RenderOptions& o, const std::atomic<bool>* cancel) {
     RenderJob job;
     job.width = o.width;
     job.height = o.height;
-    job.integrator = {*parse_render_mode(o.mode_name), o.max_depth};
+    job.integrator = {*parse_render_mode(o.mode_name), o.max_depth,
+                      cs1230::parse_stage(o.cs1230_stage).value_or(cs1230::Stage::Illuminate)};
     job.sampling = {o.aa, o.spp, o.aa_threshold};
     job.threads = o.threads;
     job.cancel = cancel;

@@ -21,6 +21,7 @@ struct RenderOptions {
     std::string scene_path, output, mode_name = "whitted", missing = "error";
     int width = 640, height = 480, max_depth = 5, aa = 1, spp = 1, threads = 0;
     float aa_threshold = 0.0f, time = 0.0f;
+    std::string cs1230_stage = "illuminate";  // which of the course's projects draws a CSCI 1230 file (§9.5)
     bool lenient = false, quiet = false, stats = false;
     std::vector<std::string> texture_dirs;
     bool is_showcase = false;  // no scene given: the bundled showcase

@@ -10,6 +10,7 @@
 
 #include "accel/scene.h"
 #include "camera/camera.h"
+#include "cs1230/stage.h"
 #include "integrator/ray_counts.h"
 #include "integrator/render_mode.h"
 #include "sampler/sampler.h"
@@ -47,6 +48,8 @@ protected:
 struct IntegratorSettings {
     RenderMode mode = RenderMode::Whitted;
     int max_depth = 5;  // camera ray = depth 0; no ray deeper than this is traced (path: bounces)
+    // Which of the course's projects draws a CSCI 1230 scene in Whitted mode (§9.5).
+    cs1230::Stage cs1230_stage = cs1230::Stage::Illuminate;
 };
 
 // The integrator for `settings.mode`, rendering `scene` as seen by `camera`.
