@@ -119,7 +119,11 @@ public:
         // the part after the position (ours is given as FILE:LINE:COL).
         std::string what = e.what();
         if (const auto colon = what.find(": "); colon != std::string::npos) what = what.substr(colon + 2);
+        // At the start of the token the lexer gave up on (it may have read on into the next one).
         if (what.find("end of input") != std::string::npos) return fail(what, text_size_);
+        if (what.find("invalid string") != std::string::npos) return fail(what, tracker_.string_start);
+        if (what.find("invalid literal") != std::string::npos || what.find("invalid number") != std::string::npos)
+            return fail(what, tracker_.scalar_start);
         return fail(what, tracker_.token_start);
     }
 

@@ -505,6 +505,10 @@ ParseResult read_scene(std::string_view text, const std::string& path, const Rea
         return result;
     }
     SceneReader(ctx, result.scene, limits).read(json.tree.root);
+    // In file order, as for the bracket format (the reader visits the keys in its own order).
+    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+        return a.loc.line != b.loc.line ? a.loc.line < b.loc.line : a.loc.col < b.loc.col;
+    });
     return result;
 }
 
