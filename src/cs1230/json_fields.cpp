@@ -2,6 +2,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <unordered_set>
 
@@ -33,7 +34,43 @@ SourceLoc Context::at(std::uint32_t offset) const {
 }
 
 void Context::report(Severity severity, std::uint32_t offset, std::string message) {
+    // Errors are kept until there are many more than will be listed: the reader does not visit the
+    // file strictly in order, so the first kMaxErrors in file order are among the first few hundred.
+    constexpr std::size_t kKeptErrors = 20 * kMaxErrors;
+    if (severity == Severity::Error && ++errors > kKeptErrors) {
+        const SourceLoc loc = at(offset);
+        if (unlisted_errors.empty() || loc.line < unlisted_errors[0].loc.line ||
+            (loc.line == unlisted_errors[0].loc.line && loc.col < unlisted_errors[0].loc.col))
+            unlisted_errors.assign(1, {severity, loc, std::move(message)});
+        return;
+    }
+    if (severity == Severity::Warning && ++warnings > kMaxWarnings) return;
     diagnostics.push_back({severity, at(offset), std::move(message)});
+}
+
+void Context::finish() {
+    auto before = [](const Diagnostic& a, const Diagnostic& b) {
+        return a.loc.line != b.loc.line ? a.loc.line < b.loc.line : a.loc.col < b.loc.col;
+    };
+    std::stable_sort(diagnostics.begin(), diagnostics.end(), before);
+    std::vector<Diagnostic> kept;
+    std::size_t listed = 0;
+    const Diagnostic* first_unlisted = unlisted_errors.empty() ? nullptr : &unlisted_errors[0];
+    for (const Diagnostic& d : diagnostics) {
+        if (d.severity == Severity::Error && ++listed > kMaxErrors) {
+            if (!first_unlisted || before(d, *first_unlisted)) first_unlisted = &d;
+            continue;
+        }
+        kept.push_back(d);
+    }
+    if (errors > kMaxErrors)
+        kept.push_back({Severity::Error, first_unlisted->loc,
+                        std::to_string(errors - kMaxErrors) + " more error" + (errors - kMaxErrors == 1 ? "" : "s") +
+                            " not listed (the first of them is here)"});
+    if (warnings > kMaxWarnings)
+        kept.push_back({Severity::Warning, kept.empty() ? at(0) : kept.back().loc,
+                        std::to_string(warnings - kMaxWarnings) + " more warnings not listed"});
+    diagnostics = std::move(kept);
 }
 
 Fields::Fields(Context& ctx, std::uint32_t node, std::string what, std::vector<std::string_view> allowed)

@@ -16,17 +16,28 @@
 
 namespace whitted::cs1230 {
 
+// Errors listed (the rest only counted), as for the bracket format; warnings kept (the rest counted).
+constexpr std::size_t kMaxErrors = 20, kMaxWarnings = 1000;
+
 // The file being read and where its problems go.
 struct Context {
+    Context(const JsonTree& t, const LineIndex& l, std::string p, std::vector<Diagnostic>& d)
+        : tree(t), lines(l), path(std::move(p)), diagnostics(d) {}
     const JsonTree& tree;
     const LineIndex& lines;
     std::string path;
     std::vector<Diagnostic>& diagnostics;
+    // A file of a million bad values must not make a million messages: past a few hundred, the
+    // problems are counted (finish() keeps the first kMaxErrors in file order, then a count).
+    std::size_t errors = 0, warnings = 0;
+    std::vector<Diagnostic> unlisted_errors;  // beyond the first few hundred: only the earliest one kept
 
     SourceLoc at(std::uint32_t offset) const;
     void error(std::uint32_t offset, std::string message) { report(Severity::Error, offset, std::move(message)); }
     void warning(std::uint32_t offset, std::string message) { report(Severity::Warning, offset, std::move(message)); }
     void report(Severity severity, std::uint32_t offset, std::string message);
+    // Sorts the diagnostics into file order, keeps the first kMaxErrors errors and says how many more.
+    void finish();
 };
 
 class Fields {

@@ -499,16 +499,13 @@ ParseResult read_scene(std::string_view text, const std::string& path, const Rea
     result.scene.asset_anchor = (file.parent_path().parent_path() / file.filename()).string();
     const LineIndex lines(text);
     JsonParseResult json = parse_json(text);
-    Context ctx{json.tree, lines, path, result.diagnostics};
+    Context ctx(json.tree, lines, path, result.diagnostics);
     if (!json.ok) {
         ctx.error(json.error_offset, "not valid JSON: " + json.error);
         return result;
     }
     SceneReader(ctx, result.scene, limits).read(json.tree.root);
-    // In file order, as for the bracket format (the reader visits the keys in its own order).
-    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
-        return a.loc.line != b.loc.line ? a.loc.line < b.loc.line : a.loc.col < b.loc.col;
-    });
+    ctx.finish();  // in file order, as for the bracket format (the reader visits keys in its own order)
     return result;
 }
 

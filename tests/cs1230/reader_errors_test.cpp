@@ -192,6 +192,38 @@ TEST(Cs1230ReaderErrors, EveryErrorOfAFileAtOnceInFileOrder) {
     }
 }
 
+TEST(Cs1230ReaderErrors, PastTwentyErrorsTheRestAreCounted) {
+    // 30 groups that are numbers: the first 20 listed, then one error at the 21st counting the rest.
+    std::string t = kHead + "  \"groups\": [";
+    for (int i = 0; i < 30; ++i) t += (i ? ", " : "") + std::to_string(100 + i);
+    t += "]\n}";
+    const auto e = errors(t);
+    ASSERT_EQ(e.size(), 21u);
+    EXPECT_EQ(e[0].rfind(kFile + ":" + at(t, "100") + ": error: a group must be an object", 0), 0u) << e[0];
+    EXPECT_EQ(e[20], kFile + ":" + at(t, "120") + ": error: 10 more errors not listed (the first of them is here)");
+}
+
+TEST(Cs1230ReaderErrors, TemplatesMayNotMultiplyLightsBeyondTheLimit) {
+    // Three templates, each using the one before twice, the first with a light: 8 lights.
+    const std::string templates = R"(  "templateGroups": [
+    {"name": "t0", "lights": [{"type": "directional", "color": [1, 1, 1], "direction": [0, 0, -1]}]},
+    {"name": "t1", "groups": [{"name": "t0"}, {"name": "t0"}]},
+    {"name": "t2", "groups": [{"name": "t1"}, {"name": "t1"}]},
+    {"name": "t3", "groups": [{"name": "t2"}, {"name": "t2"}]}
+  ],
+  "groups": [{"name": "t3"}]
+})";
+    cs1230::ReadLimits limits;
+    limits.max_lights = 8;
+    EXPECT_TRUE(cs1230::read_scene(kHead + templates, kFile, limits).ok());
+    EXPECT_EQ(cs1230::read_scene(kHead + templates, kFile, limits).scene.lights.size(), 8u);
+    limits.max_lights = 7;
+    const ParseResult r = cs1230::read_scene(kHead + templates, kFile, limits);
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_EQ(r.diagnostics[0].str(), kFile + ":1:1: error: the scene has 8 lights once its templates are placed, "
+                                              "more than the limit of 7");
+}
+
 TEST(Cs1230ReaderErrors, WarningsForWhatTheCourseIgnores) {
     const std::string t = kHead + R"(  "groups": [
     {"primitives": [{"type": "cube", "bumpMapFile": "b.png"}]},
