@@ -98,8 +98,10 @@ void Fields::check_keys() {
         for (std::string_view a : allowed_) known = known || a == key;
         if (!known) {
             const std::string hint = did_you_mean(key, candidates);
-            ctx_.error(m.key_offset, "unknown key " + in_quotes(key) + " in " + what_ +
-                                         (hint.empty() ? " (it may hold: " + candidates + ")" : hint));
+            ctx_.report(ctx_.lenient ? Severity::Warning : Severity::Error, m.key_offset,
+                        "unknown key " + in_quotes(key) + " in " + what_ +
+                            (hint.empty() ? " (it may hold: " + candidates + ")" : hint) +
+                            (ctx_.lenient ? ": skipped (--lenient)" : ""));
             continue;
         }
         if (!seen.insert(key).second)

@@ -30,6 +30,7 @@ struct Context {
     // A file of a million bad values must not make a million messages: past a few hundred, the
     // problems are counted (finish() keeps the first kMaxErrors in file order, then a count).
     std::size_t errors = 0, warnings = 0;
+    bool lenient = false;  // unknown keys are warnings (--lenient)
     std::vector<Diagnostic> unlisted_errors;  // beyond the first few hundred: only the earliest one kept
 
     SourceLoc at(std::uint32_t offset) const;

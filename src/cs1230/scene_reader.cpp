@@ -42,8 +42,8 @@ glm::vec3 direction_of(const glm::dmat4& m, const glm::vec3& d) { return glm::ve
 
 class SceneReader {
 public:
-    SceneReader(Context& ctx, SceneDescription& scene, const ReadLimits& limits)
-        : ctx_(ctx), scene_(scene), limits_(limits) {}
+    SceneReader(Context& ctx, SceneDescription& scene, const ReadOptions& options)
+        : ctx_(ctx), scene_(scene), options_(options) {}
 
     void read(std::uint32_t root);
 
@@ -80,7 +80,7 @@ private:
 
     Context& ctx_;
     SceneDescription& scene_;
-    const ReadLimits& limits_;
+    const ReadOptions& options_;
     float ka_ = 0, kd_ = 0, ks_ = 0, kt_ = 0;
     std::vector<Scope> scopes_;
     std::unordered_map<std::string, Template> templates_;  // name → the latest template of that name
@@ -450,10 +450,10 @@ void SceneReader::count_lights(int scope) {
 }
 
 void SceneReader::place_lights(std::uint32_t root_offset) {
-    if (scopes_[0].lights > limits_.max_lights) {
+    if (scopes_[0].lights > options_.max_lights) {
         ctx_.error(root_offset, "the scene has " + std::to_string(scopes_[0].lights) +
                                     " lights once its templates are placed, more than the limit of " +
-                                    std::to_string(limits_.max_lights));
+                                    std::to_string(options_.max_lights));
         return;
     }
     scene_.lights.reserve(scopes_[0].lights);
@@ -486,7 +486,7 @@ void SceneReader::place_lights(std::uint32_t root_offset) {
 
 }  // namespace
 
-ParseResult read_scene(std::string_view text, const std::string& path, const ReadLimits& limits) {
+ParseResult read_scene(std::string_view text, const std::string& path, const ReadOptions& options) {
     ParseResult result;
     result.scene.path = path;
     result.scene.dialect = Dialect::Cs1230;
@@ -500,11 +500,12 @@ ParseResult read_scene(std::string_view text, const std::string& path, const Rea
     const LineIndex lines(text);
     JsonParseResult json = parse_json(text);
     Context ctx(json.tree, lines, path, result.diagnostics);
+    ctx.lenient = options.lenient;
     if (!json.ok) {
         ctx.error(json.error_offset, "not valid JSON: " + json.error);
         return result;
     }
-    SceneReader(ctx, result.scene, limits).read(json.tree.root);
+    SceneReader(ctx, result.scene, options).read(json.tree.root);
     ctx.finish();  // in file order, as for the bracket format (the reader visits keys in its own order)
     return result;
 }

@@ -21,12 +21,14 @@
 
 namespace whitted::cs1230 {
 
-struct ReadLimits {
+struct ReadOptions {
     // Lights after templates are expanded (a template used many times, inside others used many
     // times, multiplies its lights); every light is visited at every shaded point.
     std::size_t max_lights = 100'000;
+    // An unknown key is skipped with a warning instead of being an error (--lenient).
+    bool lenient = false;
 };
 
-ParseResult read_scene(std::string_view text, const std::string& path, const ReadLimits& limits = {});
+ParseResult read_scene(std::string_view text, const std::string& path, const ReadOptions& options = {});
 
 }  // namespace whitted::cs1230

@@ -98,7 +98,7 @@ LoadResult load_scene(const std::string& path, const LoadOptions& options) {
             parsed.diagnostics.push_back({Severity::Error, SourceLoc{path, 0, 0}, "cannot read scene file: " + file.error});
             parsed.unreadable = true;
         } else {
-            parsed = cs1230::read_scene(file.bytes, path);
+            parsed = cs1230::read_scene(file.bytes, path, {.lenient = options.lenient});
         }
     } else {
         parsed = parse_scene_file(path, parse_options);
@@ -113,7 +113,7 @@ LoadResult load_scene(const std::string& path, const LoadOptions& options) {
 
 LoadResult load_scene_text(const std::string& text, const std::string& path, const LoadOptions& options) {
     auto t = Clock::now();
-    ParseResult parsed = cs1230::is_json_scene(path, text) ? cs1230::read_scene(text, path)
+    ParseResult parsed = cs1230::is_json_scene(path, text) ? cs1230::read_scene(text, path, {.lenient = options.lenient})
                                                            : parse_scene_text(text, path, {options.lenient, options.time});
     return finish(std::move(parsed), options, since(t));
 }

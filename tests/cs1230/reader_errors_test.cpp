@@ -192,6 +192,17 @@ TEST(Cs1230ReaderErrors, EveryErrorOfAFileAtOnceInFileOrder) {
     }
 }
 
+TEST(Cs1230ReaderErrors, LenientModeSkipsUnknownKeysWithAWarning) {
+    const std::string t = kHead + R"(  "groups": [{"primitives": [{"type": "cube", "emissive": [1, 1, 1]}]}]
+})";
+    const ParseResult r = cs1230::read_scene(t, kFile, {.lenient = true});
+    EXPECT_TRUE(r.ok());
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_EQ(r.diagnostics[0].str().rfind(kFile + ":" + at(t, "\"emissive\"") + ": warning: unknown key 'emissive'", 0), 0u)
+        << r.diagnostics[0].str();
+    EXPECT_NE(r.diagnostics[0].message.find("skipped (--lenient)"), std::string::npos);
+}
+
 TEST(Cs1230ReaderErrors, PastTwentyErrorsTheRestAreCounted) {
     // 30 groups that are numbers: the first 20 listed, then one error at the 21st counting the rest.
     std::string t = kHead + "  \"groups\": [";
@@ -213,7 +224,7 @@ TEST(Cs1230ReaderErrors, TemplatesMayNotMultiplyLightsBeyondTheLimit) {
   ],
   "groups": [{"name": "t3"}]
 })";
-    cs1230::ReadLimits limits;
+    cs1230::ReadOptions limits;
     limits.max_lights = 8;
     EXPECT_TRUE(cs1230::read_scene(kHead + templates, kFile, limits).ok());
     EXPECT_EQ(cs1230::read_scene(kHead + templates, kFile, limits).scene.lights.size(), 8u);

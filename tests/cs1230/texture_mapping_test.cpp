@@ -117,6 +117,29 @@ TEST(Cs1230TextureMapping, RepeatsTileTheImage) {
     test::expect_vec_near(texel, colour(test::kBottomRight));
 }
 
+TEST(Cs1230TextureMapping, BlendMixesKdOdWithTheTexelNotScaledByKd) {
+    // kd 0.5 · Od (0.4, 0.8, 1) = (0.2, 0.4, 0.5); the texel at (−0.25, 0.25) of the +z face is the
+    // top left one, (220, 30, 30)/255 = (0.8627451, 0.1176471, 0.1176471). blend 0.25, lit head-on
+    // by a white light: D = 0.75·(0.2, 0.4, 0.5) + 0.25·texel = (0.3656863, 0.3294118, 0.4044118).
+    const std::string dir = test::make_temp_dir();
+    std::filesystem::create_directories(dir + "/textures");
+    ASSERT_TRUE(test::write_png(dir + "/textures/quad.png", test::quadrant_picture(2)));
+    auto lit = [&](const char* blend, cs1230::Stage stage) {
+        const std::string text = json_scene(
+            light_group(R"("type": "directional", "color": [1, 1, 1], "direction": [0, 0, -1])") + "," +
+                primitive_group(std::string(R"("type": "cube", "diffuse": [0.4, 0.8, 1], "textureFile": "textures/quad.png",
+                                             "blend": )") + blend),
+            0.0f, 0.5f, 0.0f);
+        const LoadResult r = test::load_json(text, dir + "/scenes/blend.json", stage);
+        EXPECT_TRUE(r.ok()) << test::diagnostics_text(r);
+        return test::trace(*r.scene, Ray{{-0.25f, 0.25f, 5}, {0, 0, -1}}, 4, stage).color();
+    };
+    test::expect_vec_near(lit("0.25", cs1230::Stage::Illuminate), {0.3656863f, 0.3294118f, 0.4044118f});
+    test::expect_vec_near(lit("0", cs1230::Stage::Illuminate), {0.2f, 0.4f, 0.5f});   // the default: no texture
+    test::expect_vec_near(lit("1", cs1230::Stage::Illuminate), {0.8627451f, 0.1176471f, 0.1176471f});
+    test::expect_vec_near(lit("0.25", cs1230::Stage::Intersect), {0.2f, 0.4f, 0.5f});  // no textures there
+}
+
 TEST(Cs1230TextureMapping, NearestTexelOfTheLookupFormula) {
     // A 4 × 2 image whose texel (c, r) is (10c, 100r, 7): column ⌊u·U·w⌋ mod w, row ⌊(1 − v)·V·h⌋ mod h.
     TextureImage img;
