@@ -24,14 +24,17 @@ if ((${#targets[@]} == 0)); then
 fi
 cmake --build "$build" -j"$(nproc)" --target "${targets[@]}"
 
-# Seeds: every scene of scenes/ and of the wild corpus for the scene targets, every image for the
-# texture target (copied flat, so that libFuzzer reads nothing else from those folders).
+# Seeds: every scene of scenes/ and of the wild corpus for the scene targets, the CSCI 1230 JSON
+# scenes for cs1230_fuzzer, every image for the texture target (copied flat, so that libFuzzer reads nothing else from those folders).
 seeds="$build/seeds"
 rm -rf "$seeds" && mkdir -p "$seeds/scenes" "$seeds/images"
 find "$root/scenes" "$shared/scenes/wild" -type f -iname '*.sc' 2>/dev/null |
     while read -r f; do cp "$f" "$seeds/scenes/$(echo "$f" | md5sum | cut -c1-12).sc"; done
-find "$root/scenes" "$shared/scenes/wild" -type f -size -400k \
-    \( -iname '*.png' -o -iname '*.bmp' -o -iname '*.ppm' -o -iname '*.jpg' -o -iname '*.tga' \) 2>/dev/null |
+mkdir -p "$seeds/json"
+find "$shared/scenes/cs1230" -type f -iname '*.json' -size -60k 2>/dev/null |
+    while read -r f; do cp "$f" "$seeds/json/$(echo "$f" | md5sum | cut -c1-12).json"; done
+find "$root/scenes" "$shared/scenes/wild" "$shared/scenes/cs1230" -type f -size -400k \
+    \( -iname '*.png' -o -iname '*.bmp' -o -iname '*.ppm' -o -iname '*.jpg' -o -iname '*.tga' -o -iname '*.gif' \) 2>/dev/null |
     while read -r f; do cp "$f" "$seeds/images/$(echo "$f" | md5sum | cut -c1-12)"; done
 
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
@@ -42,6 +45,7 @@ for t in "${targets[@]}"; do
     case "$t" in
         texture_fuzzer) seed="$seeds/images" max_len=400000 dict=() ;;
         compare_image_fuzzer) seed="$root/fuzz/seeds/compare_image" max_len=400000 dict=() ;;
+        cs1230_fuzzer) seed="$seeds/json" max_len=65536 dict=(-dict="$root/fuzz/cs1230.dict") ;;
         *) seed="$seeds/scenes" max_len=65536 dict=(-dict="$root/fuzz/scene.dict") ;;
     esac
     echo "== $t: ${seconds}s"

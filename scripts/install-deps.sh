@@ -10,9 +10,10 @@ set -euo pipefail
 # clang, libclang-rt-dev: the libFuzzer targets of fuzz/ (scripts/fuzz.sh); libFuzzer and clang's
 # sanitizer runtimes are in libclang-rt-dev, which clang only recommends.
 # libtinyobjloader-dev: reads the OBJ files of `object mesh` (scene-format.md §9.3).
+# nlohmann-json3-dev: reads Brown CSCI 1230's JSON scene files (scene-format.md §9.5).
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libcli11-dev libgtest-dev libgmock-dev
           libbenchmark-dev libfltk1.3-dev fluid libopenexr-dev openmpi-bin libopenmpi-dev
-          clang libclang-rt-dev zlib1g-dev libjpeg-dev libtinyobjloader-dev)
+          clang libclang-rt-dev zlib1g-dev libjpeg-dev libtinyobjloader-dev nlohmann-json3-dev)
 if [[ "${1:-}" == "--viewer-test" ]]; then packages+=(xvfb x11-apps imagemagick xdotool tesseract-ocr); fi
 
 missing=()

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "cs1230/detect.h"
 #include "film/image_io.h"
 #include "base/read_file.h"
 #include "session/run_limits.h"
@@ -92,7 +93,7 @@ std::string collect_given(CLI::App& app, RenderSettings& settings, Frontend fron
 
 std::string finish_render_options(CLI::App& app, RenderOptions& o, Frontend frontend) {
     if (std::string refused = collect_given(app, o.settings, frontend, ""); !refused.empty()) return refused;
-    apply_mode_defaults(o.settings);
+    apply_mode_defaults(o.settings, !o.scene_path.empty() && cs1230::is_json_scene_file(o.scene_path));
     if (std::string problem = validate(o.settings); !problem.empty()) return problem;
     o.is_showcase = o.scene_path.empty();
     if (o.is_showcase) o.scene_path = bundled_showcase();

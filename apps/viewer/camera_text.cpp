@@ -12,6 +12,8 @@
 #include <sstream>
 #include <vector>
 
+#include "cs1230/detect.h"
+
 namespace whitted::viewer {
 namespace {
 
@@ -137,6 +139,10 @@ std::string save_camera_into_file(const std::string& path, const CameraDesc& cam
     std::ostringstream buf;
     buf << in.rdbuf();
     if (in.bad()) return "cannot read '" + path + "'";
+    // A CSCI 1230 JSON file (§9.5) has no camera block to replace: a bracket block would break it.
+    if (cs1230::is_json_scene(path, buf.str()))
+        return "'" + path + "' is a CSCI 1230 JSON file, whose camera the viewer does not write: set its "
+               "cameraData by hand (File > Copy camera gives the eye, focus, up and angle)";
     const CameraReplacement r = replace_camera_block(buf.str(), camera);
     if (!r.error.empty()) return path + ": " + r.error;
 

@@ -88,6 +88,10 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"whitted", "raycast", "normals", "depth", "path"}));
     app.add_option("--threads", o.settings.threads, "Worker threads (0 = all hardware threads)")
         ->check(CLI::Range(0, 1024));
+    std::string stage = "illuminate";
+    app.add_option("--cs1230-stage", stage,
+                   "Brown CSCI 1230 JSON scenes: draw them as the course's Intersect or Illuminate project")
+        ->check(CLI::IsMember({"illuminate", "intersect"}));
     app.add_flag("--watch", o.watch, "Reload and render again when the scene file changes on disk");
     // One directory per --texture-path (repeat it for more): a list would swallow the scene after it.
     app.add_option("--texture-path", o.texture_dirs, "Extra directory to look for textures in (repeat for more)")
@@ -139,6 +143,7 @@ int main(int argc, char** argv) {
     // Scripts and tests get what they ask for, never what an earlier run left behind.
     if (o.exit_when_done || !o.ready_file.empty()) o.settings_given = true;
     o.settings.integrator.mode = *parse_render_mode(mode_name);
+    o.settings.integrator.cs1230_stage = *cs1230::parse_stage(stage);
     if (o.settings.integrator.mode == RenderMode::Path) {  // §9.2: a path tracer's defaults
         if (spp_option->count() == 0) o.settings.sampling.spp = 64;
         if (depth_option->count() == 0) o.settings.integrator.max_depth = 64;

@@ -164,6 +164,7 @@ LoadOptions ViewerWindow::load_options() const {
     if (auto it = texture_overrides_.find(scene_); it != texture_overrides_.end()) o.textures.overrides = it->second;
     if (auto it = declined_textures_.find(scene_); it != declined_textures_.end()) o.textures.checker_names = it->second;
     o.textures.missing = options_.checker_textures ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
+    o.cs1230_stage = options_.settings.integrator.cs1230_stage;  // the Intersect stage reads no texture (§9.5)
     return o;
 }
 

@@ -20,13 +20,51 @@ public:
     }
     Fd(const Fd&) = delete;
     Fd& operator=(const Fd&) = delete;
+    Fd(Fd&& o) noexcept : fd_(o.fd_) { o.fd_ = -1; }
     int get() const { return fd_; }
 
 private:
     int fd_;
 };
 
+// Opens `path` for reading if it is a regular file (without blocking on a FIFO); fills
+// out.error and returns an invalid Fd otherwise. `size` gets its size.
+Fd open_regular_file(const std::string& path, FileContents& out, std::size_t& size) {
+    Fd fd(open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+    if (fd.get() < 0) {
+        out.error = std::strerror(errno);
+        return fd;
+    }
+    struct stat st {};
+    if (fstat(fd.get(), &st) != 0) out.error = std::strerror(errno);
+    else if (S_ISDIR(st.st_mode)) out.error = "it is a directory";
+    else if (!S_ISREG(st.st_mode)) out.error = "it is not a regular file (a device, pipe or socket is not read)";
+    size = std::size_t(st.st_size);
+    return fd;
+}
+
 }  // namespace
+
+FileContents read_file_start(const std::string& path, std::size_t max_bytes) {
+    FileContents out;
+    std::size_t size = 0;
+    const Fd fd = open_regular_file(path, out, size);
+    if (!out.error.empty()) return out;
+    out.bytes.resize(std::min(size, max_bytes));
+    std::size_t have = 0;
+    while (have < out.bytes.size()) {
+        const ssize_t n = read(fd.get(), out.bytes.data() + have, out.bytes.size() - have);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            out.error = std::strerror(errno);
+            return out;
+        }
+        if (n == 0) break;
+        have += std::size_t(n);
+    }
+    out.bytes.resize(have);
+    return out;
+}
 
 std::string describe_bytes(std::size_t bytes) {
     char buf[64];

@@ -20,6 +20,10 @@ struct FileContents {
 FileContents read_regular_file(const std::string& path, std::size_t max_bytes,
                                const std::atomic<bool>* cancel = nullptr);
 
+// The first (up to) `max_bytes` bytes of a regular file, whatever its size: enough to tell what
+// kind of file it is without reading all of it. Refuses what read_regular_file refuses.
+FileContents read_file_start(const std::string& path, std::size_t max_bytes);
+
 // "4800 bytes", "12.3 MiB", "1.5 GiB": sizes for messages.
 std::string describe_bytes(std::size_t bytes);
 

@@ -16,6 +16,8 @@ struct Light {
     float exponent = 1.0f;
     float radius = 0.0f;   // point/spot: a disc facing the shaded point (§9.1)
     float cos_half_angle = 1.0f;  // directional: its directions fill this cone (§9.1)
+    // CSCI 1230 spot (§9.5): full intensity within the inner half-angle, none beyond the outer one.
+    float spot_inner_deg = 0.0f, spot_outer_deg = 0.0f;
 };
 
 }  // namespace whitted

@@ -10,6 +10,10 @@ const char* link_keyword(LinkKind kind) {
         case LinkKind::Trans: return "trans";
         case LinkKind::Subgraph: return "subgraph";
         case LinkKind::ImplicitRoot: return "the top-level trans blocks";
+        case LinkKind::JsonRoot: return "the file's groups";
+        case LinkKind::JsonGroup: return "group";
+        case LinkKind::JsonTemplateUse: return "group naming template";
+        case LinkKind::JsonTemplate: return "template group";
     }
     return "?";
 }

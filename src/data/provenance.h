@@ -18,8 +18,12 @@
 namespace whitted {
 
 // ImplicitRoot: a Brown/Tufts file's top-level trans blocks, the root no line names (§9.4).
-enum class LinkKind : unsigned char { Mastersubgraph, Trans, Subgraph, ImplicitRoot };
-const char* link_keyword(LinkKind kind);  // "mastersubgraph", "trans", "subgraph", "the top-level trans blocks"
+// The Json kinds are a CSCI 1230 file's (§9.5): its top-level `groups`, a group (the innermost one
+// holding the object, whose matrix it is), a group naming a template, the template group itself.
+enum class LinkKind : unsigned char {
+    Mastersubgraph, Trans, Subgraph, ImplicitRoot, JsonRoot, JsonGroup, JsonTemplateUse, JsonTemplate
+};
+const char* link_keyword(LinkKind kind);  // "mastersubgraph", "trans", "subgraph", "the top-level trans blocks", …
 
 
 // One line of a chain, resolved for reading.

@@ -8,6 +8,7 @@
 #include "camera/camera.h"
 #include "data/instance.h"
 #include "data/light.h"
+#include "data/lighting_model.h"
 #include "data/material.h"
 #include "data/provenance.h"
 #include "data/texture_image.h"
@@ -24,6 +25,7 @@ struct SceneData {
     Camera camera;  // the file's camera: what a render uses unless it is given another
     glm::vec3 background{0.0f};
     glm::vec3 ambient_intensity{1.0f};
+    LightingModel lighting = LightingModel::Labs;  // §7, or §9.5 (integrator/cs1230_integrator.h)
     Provenance provenance;  // where each instance, material and light came from (the inspector's)
 };
 

@@ -3,7 +3,12 @@
 namespace whitted {
 
 const char* dialect_name(Dialect dialect) {
-    return dialect == Dialect::BrownTufts ? "Brown/Tufts" : "SceneView/Ray labs";
+    switch (dialect) {
+        case Dialect::Labs: break;
+        case Dialect::BrownTufts: return "Brown/Tufts";
+        case Dialect::Cs1230: return "Brown CSCI 1230 (JSON)";
+    }
+    return "SceneView/Ray labs";
 }
 
 SubgraphIndex index_subgraphs(const SceneDescription& scene) {

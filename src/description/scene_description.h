@@ -13,13 +13,15 @@
 
 #include "base/diagnostic.h"
 #include "data/light_type.h"
+#include "data/lighting_model.h"
 #include "data/shape_kind.h"
 
 namespace whitted {
 
-// Which family of files the scene was written in (scene-format.md §9.4): the labs' own format
-// (mastersubgraphs) or the Brown/Tufts one (top-level trans blocks, `light [ number N`).
-enum class Dialect : unsigned char { Labs, BrownTufts };
+// Which family of files the scene was written in (scene-format.md §9.4, §9.5): the labs' own format
+// (mastersubgraphs), the Brown/Tufts one (top-level trans blocks, `light [ number N`), or Brown
+// CSCI 1230's JSON files (read by cs1230/, not by parse/).
+enum class Dialect : unsigned char { Labs, BrownTufts, Cs1230 };
 const char* dialect_name(Dialect dialect);
 
 struct TextureRef {
@@ -30,6 +32,7 @@ struct TextureRef {
     // `image/earth.bmp` beside an earth.ppm): when the usual look-up fails, trailing parts of the
     // path and other extensions are tried (§9.4). Windows paths get this in every file.
     bool loose_lookup = false;
+    bool allow_gif = false;  // CSCI 1230 files: GIF is decoded too (§9.5; their course ships one)
 };
 
 struct MaterialDesc {
@@ -68,6 +71,7 @@ struct LightDesc {
     float exponent = 1;
     float radius = 0;     // §9.1: point/spot light as a disc of this radius
     float angle_deg = 0;  // §9.1: angular diameter of a directional light
+    float penumbra_deg = 0;  // §9.5 (CSCI 1230 spot): the falloff band inside aperture_deg, the outer half-angle
     SourceLoc loc;
 };
 
@@ -107,6 +111,11 @@ struct SceneDescription {
     std::vector<SubgraphDesc> subgraphs;
     int root = -1;  // index of `root` in subgraphs
     Dialect dialect = Dialect::Labs;
+    LightingModel lighting = LightingModel::Labs;  // how the scene is lit: §7, or CSCI 1230's §9.5
+    // The file that textures and meshes are looked up next to, when not `path` (§9.5: a CSCI 1230
+    // file names them relative to the parent of its folder).
+    std::string asset_anchor;
+    const std::string& assets_from() const { return asset_anchor.empty() ? path : asset_anchor; }
 
     // Index of the mastersubgraph with that name, or -1 (a linear scan: see SubgraphIndex).
     int find_subgraph(const std::string& name) const;

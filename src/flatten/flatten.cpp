@@ -67,6 +67,8 @@ Light to_light(const LightDesc& l) {
     out.exponent = l.exponent;
     out.radius = l.radius;
     out.cos_half_angle = std::cos(glm::radians(l.angle_deg) * 0.5f);
+    out.spot_outer_deg = l.aperture_deg;
+    out.spot_inner_deg = l.aperture_deg - l.penumbra_deg;
     return out;
 }
 
@@ -156,6 +158,7 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
     SceneData& scene = result.scene;
     scene.background = desc.background;
     scene.ambient_intensity = desc.ambient_intensity;
+    scene.lighting = desc.lighting;
     scene.camera = make_camera(desc.camera);
     Provenance& prov = scene.provenance;
     for (const LightDesc& l : desc.lights) {
@@ -234,19 +237,23 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
     std::vector<std::uint32_t> subgraph_site(desc.subgraphs.size()), first_trans(desc.subgraphs.size() + 1);
     std::vector<std::uint32_t> trans_site;
     std::vector<int> target;  // per site: the subgraph a `subgraph` line names (-1: none)
+    // A CSCI 1230 file's subgraphs are its templates, its trans blocks its groups (§9.5).
+    const bool json = desc.dialect == Dialect::Cs1230;
     for (std::size_t s = 0; s < desc.subgraphs.size(); ++s) {
         const SubgraphDesc& sg = desc.subgraphs[s];
         subgraph_site[s] = sg.implicit ? prov.add_site(LinkKind::ImplicitRoot, "", sg.loc)
+                           : json      ? prov.add_site(int(s) == desc.root ? LinkKind::JsonRoot : LinkKind::JsonTemplate,
+                                                       sg.name, sg.loc)
                                        : prov.add_site(LinkKind::Mastersubgraph, sg.name, sg.loc);
     }
     for (std::size_t s = 0; s < desc.subgraphs.size(); ++s) {
         first_trans[s] = std::uint32_t(trans_site.size());
         for (const TransDesc& t : desc.subgraphs[s].children) {
-            trans_site.push_back(prov.add_site(LinkKind::Trans, "", t.loc));
+            trans_site.push_back(prov.add_site(json ? LinkKind::JsonGroup : LinkKind::Trans, "", t.loc));
             for (const SubgraphRef& ref : t.subgraphs) {  // sites trans_site + 1, + 2, …
                 const int child = find_subgraph(index, ref.name);
-                const std::uint32_t id = prov.add_site(LinkKind::Subgraph, ref.name, ref.loc,
-                                                       child >= 0 ? subgraph_site[child] : Provenance::kNone);
+                const std::uint32_t id = prov.add_site(json ? LinkKind::JsonTemplateUse : LinkKind::Subgraph, ref.name,
+                                                       ref.loc, child >= 0 ? subgraph_site[child] : Provenance::kNone);
                 target.resize(id + 1, -1);
                 target[id] = child;
             }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "film/film.h"
+#include "integrator/cs1230_integrator.h"
 #include "integrator/whitted_integrator.h"
 #include "render/renderer.h"
 #include "render/tile_renderer.h"
@@ -154,6 +155,10 @@ PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y
     // The Whitted model's shading of each sample, recorded. In the other modes it still tells
     // what the camera ray hit, the lights and the mirror and glass rays, but not the colour.
     const WhittedIntegrator whitted(scene, camera, job.integrator.max_depth);
+    // A CSCI 1230 scene is shaded by the course's model (§9.5), whose colour is also truncated to
+    // bytes: what clamping and truncating took away is the difference to the sum of the parts.
+    const Cs1230Integrator course(scene, camera, job.integrator.max_depth, job.integrator.cs1230_stage);
+    const bool by_course = scene.data.lighting == LightingModel::Cs1230;
     r.decomposed = job.integrator.mode == RenderMode::Whitted;
     const bool clamps = integrator->clamps_samples();
     float best = Scene::kInfinity;
@@ -163,9 +168,11 @@ PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y
         const Ray ray = camera_sample_ray(camera, sampler, job.width, job.height, x, y, key.index);
         ShadingRecorder rec;
         RayCounts counts;
-        const glm::vec3 c = whitted.radiance(ray, key, sampler, counts, rec);
+        const glm::vec3 c = by_course ? course.radiance(ray, key, sampler, counts, rec)
+                                      : whitted.radiance(ray, key, sampler, counts, rec);
         ColourParts p = parts_of(rec);
-        if (clamps) p.clamp = clamped(c) - c;  // what the film takes of the sample (§7)
+        if (by_course) p.clamp = c - p.sum();
+        else if (clamps) p.clamp = clamped(c) - c;  // what the film takes of the sample (§7)
         add_scaled(r.parts, p, 1.0f / float(n));
         count_seen(scene, r.seen, rec);
         const glm::vec2 at = sampler.centred() ? glm::vec2(0.5f) : sampler.pixel_offset(key);

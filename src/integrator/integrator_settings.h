@@ -1,6 +1,7 @@
 #pragma once
 // How to render: the method and its recursion limit. Settings only, so that whatever describes a
 // render (render/render_job.h) names them without pulling in an integrator.
+#include "cs1230/stage.h"
 #include "integrator/render_mode.h"
 
 namespace whitted {
@@ -8,6 +9,8 @@ namespace whitted {
 struct IntegratorSettings {
     RenderMode mode = RenderMode::Whitted;
     int max_depth = 5;  // camera ray = depth 0; no ray deeper than this is traced (path: bounces)
+    // Which of the course's projects draws a CSCI 1230 scene in Whitted mode (§9.5).
+    cs1230::Stage cs1230_stage = cs1230::Stage::Illuminate;
 };
 
 }  // namespace whitted

@@ -9,7 +9,8 @@
 namespace whitted {
 
 bool load_meshes(FlattenResult& flat, const std::string& scene_path, const std::vector<std::string>& search_dirs,
-                 std::vector<Diagnostic>& diagnostics) {
+                 std::vector<Diagnostic>& diagnostics, bool confined, std::size_t max_file_bytes) {
+    const ConfinedFolders folders(scene_path, search_dirs);
     SceneData& scene = flat.scene;
     constexpr std::uint32_t kNoMesh = 0xffffffffu;
     std::vector<std::uint32_t> mesh_of_material(scene.materials.size(), kNoMesh);
@@ -23,16 +24,31 @@ bool load_meshes(FlattenResult& flat, const std::string& scene_path, const std::
             ok = false;
             continue;
         }
+        if (confined && std::filesystem::path(o.mesh_file).is_absolute()) {
+            diagnostics.push_back({Severity::Error, o.mesh_loc,
+                                   "mesh file '" + o.mesh_file + "': an absolute path, refused for a file from others "
+                                   "(--untrusted): name it relative to the scene's folder"});
+            failed[o.mesh_file] = true;
+            ok = false;
+            continue;
+        }
         const std::vector<std::string> tried = texture_candidates(o.mesh_file, scene_path, search_dirs);
-        std::string found;
+        std::string found, outside;
         std::error_code ec;
-        for (const std::string& path : tried)
-            if (std::filesystem::is_regular_file(path, ec)) {
-                found = path;
-                break;
+        for (const std::string& path : tried) {
+            if (!std::filesystem::is_regular_file(path, ec)) continue;
+            if (confined && !folders.contains(path)) {
+                if (outside.empty()) outside = path;
+                continue;
             }
+            found = path;
+            break;
+        }
         if (found.empty()) {
             std::string message = "mesh file '" + o.mesh_file + "' not found";
+            if (!outside.empty())
+                message = "mesh file '" + o.mesh_file + "': '" + outside +
+                          "' is outside the scene's folder and the --texture-path folders (--untrusted)";
             for (const std::string& t : tried) message += "\n    tried: " + t;
             diagnostics.push_back({Severity::Error, o.mesh_loc, message});
             failed[o.mesh_file] = true;
@@ -44,7 +60,7 @@ bool load_meshes(FlattenResult& flat, const std::string& scene_path, const std::
             continue;
         }
         TriangleMesh mesh;
-        const ObjReadResult r = read_obj(found, mesh);
+        const ObjReadResult r = read_obj(found, mesh, max_file_bytes);
         if (!r.ok) {
             const std::string where = r.line > 0 ? found + ":" + std::to_string(r.line) : found;
             diagnostics.push_back({Severity::Error, o.mesh_loc, "cannot use mesh '" + o.mesh_file + "': " + where + ": " + r.error});

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "flatten/flatten.h"
+#include "mesh/obj_reader.h"
 
 namespace whitted {
 
@@ -13,7 +14,10 @@ namespace whitted {
 // or that holds no triangle, is an error at the `file` keyword naming the paths tried (and the
 // OBJ line of a syntax error); degenerate triangles are skipped with one warning per file.
 // Returns false if there was an error.
+// `confined` (--untrusted): as for textures, only files inside the scene's folder or a search dir
+// (links and `..` followed), and no absolute names. No file over `max_file_bytes` is read.
 bool load_meshes(FlattenResult& flat, const std::string& scene_path, const std::vector<std::string>& search_dirs,
-                 std::vector<Diagnostic>& diagnostics);
+                 std::vector<Diagnostic>& diagnostics, bool confined = false,
+                 std::size_t max_file_bytes = kMaxObjFileBytes);
 
 }  // namespace whitted

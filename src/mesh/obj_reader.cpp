@@ -13,6 +13,8 @@
 
 #include <tiny_obj_loader.h>
 
+#include "base/read_file.h"
+
 namespace whitted {
 namespace {
 
@@ -211,19 +213,14 @@ ObjReadResult read_obj_text(const std::string& text, const std::string& name, Tr
     return result;
 }
 
-ObjReadResult read_obj(const std::string& path, TriangleMesh& mesh) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+ObjReadResult read_obj(const std::string& path, TriangleMesh& mesh, std::size_t max_bytes) {
+    FileContents file = read_regular_file(path, max_bytes);
+    if (!file.ok()) {
         ObjReadResult r;
-        r.error = std::string("cannot open '") + path + "': " + std::strerror(errno);
+        r.error = "cannot read '" + path + "': " + file.error;
         return r;
     }
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) {
-        ObjReadResult r;
-        r.error = "cannot read '" + path + "'";
-        return r;
-    }
+    const std::string& text = file.bytes;
     return read_obj_text(text, path, mesh);
 }
 

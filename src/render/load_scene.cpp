@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <chrono>
 
+#include "base/read_file.h"
+#include "cs1230/detect.h"
+#include "cs1230/scene_reader.h"
 #include "flatten/flatten.h"
 #include "integrator/path_integrator.h"
 #include "mesh/mesh_loader.h"
@@ -43,12 +46,19 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     const std::size_t for_objects = flat.scene.instances.size() * kBytesPerInstance;
     textures.limits.max_total_bytes =
         std::min(textures.limits.max_total_bytes, options.max_memory - std::min(options.max_memory, for_objects));
-    result.missing_textures = load_textures(flat, parsed.scene.path, textures, result.diagnostics,
-                                             &result.texture_files, &result.texture_paths);
+    // Next to the scene file, or for a CSCI 1230 file in the parent of its folder (§9.5).
+    const std::string& assets = parsed.scene.assets_from();
+    const bool drawn_without_textures =
+        parsed.scene.lighting == LightingModel::Cs1230 && options.cs1230_stage == cs1230::Stage::Intersect;
+    if (!drawn_without_textures)  // (every material's texture stays -1, none)
+        result.missing_textures = load_textures(flat, assets, textures, result.diagnostics, &result.texture_files,
+                                                 &result.texture_paths);
     result.stats.texture_seconds = since(t);
     if (has_errors(result.diagnostics) || cancelled()) return result;
-    // Meshes (§9.3) are looked up where textures are.
-    if (!load_meshes(flat, parsed.scene.path, options.textures.search_dirs, result.diagnostics) || cancelled())
+    // Meshes (§9.3) are looked up where textures are, and confined with them (--untrusted).
+    if (!load_meshes(flat, assets, options.textures.search_dirs, result.diagnostics, options.textures.confined,
+                     options.textures.limits.max_file_bytes) ||
+        cancelled())
         return result;
 
     std::vector<SourceLoc> sources;
@@ -80,7 +90,20 @@ LoadResult load_scene(const std::string& path, const LoadOptions& options) {
     parse_options.time = options.time;
     parse_options.max_file_bytes = options.max_file_bytes;
     parse_options.cancel = options.cancel;
-    ParseResult parsed = parse_scene_file(path, parse_options);
+    // A CSCI 1230 JSON file (§9.5) goes to its own reader, everything else to the format's parser.
+    ParseResult parsed;
+    if (cs1230::is_json_scene_file(path)) {
+        FileContents file = read_regular_file(path, options.max_file_bytes, options.cancel);
+        if (file.cancelled) parsed.cancelled = true;
+        else if (!file.ok()) {
+            parsed.diagnostics.push_back({Severity::Error, SourceLoc{path, 0, 0}, "cannot read scene file: " + file.error});
+            parsed.unreadable = true;
+        } else {
+            parsed = cs1230::read_scene(file.bytes, path, {.lenient = options.lenient});
+        }
+    } else {
+        parsed = parse_scene_file(path, parse_options);
+    }
     if (parsed.cancelled) {
         LoadResult result;
         result.cancelled = true;
@@ -95,7 +118,9 @@ LoadResult load_scene_text(const std::string& text, const std::string& path, con
     parse_options.lenient = options.lenient;
     parse_options.time = options.time;
     parse_options.cancel = options.cancel;
-    ParseResult parsed = parse_scene_text(text, path, parse_options);
+    ParseResult parsed = cs1230::is_json_scene(path, text)
+                             ? cs1230::read_scene(text, path, {.lenient = options.lenient})
+                             : parse_scene_text(text, path, parse_options);
     if (parsed.cancelled) {
         LoadResult result;
         result.cancelled = true;

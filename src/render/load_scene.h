@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cs1230/stage.h"
 #include "parse/parser.h"
 #include "texture/texture_loader.h"
 
@@ -25,6 +26,9 @@ struct LoadOptions {
     // The memory the scene may need: its objects (estimated from the counts before any is made)
     // and its textures together. Sets limits.max_bytes and what is left for textures.
     std::size_t max_memory = default_max_memory();
+    // A CSCI 1230 file drawn as the course's Intersect stage (§9.5) draws no texture: its
+    // textures are not read (one that is missing is then no error).
+    cs1230::Stage cs1230_stage = cs1230::Stage::Illuminate;
     // Set by another thread (or a signal handler) to give up; checked between the load's stages.
     const std::atomic<bool>* cancel = nullptr;
 };

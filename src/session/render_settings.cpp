@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "cs1230/stage.h"
 #include "integrator/render_mode.h"
 #include "session/run_limits.h"
 
@@ -79,6 +80,10 @@ const std::vector<Setting>& render_settings_table() {
          &S::time_limit, 0, 1e7, {}, false, kMpi,
          "a time budget renders whole passes over the image, and whitted-mpi renders each tile's samples at once; "
          "use --timeout (or the batch system's limit)"},
+        {"cs1230-stage", "CS1230 stage",
+         "For Brown CSCI 1230 JSON scenes: draw them as the course's Intersect project (directional lights, no "
+         "shadows, reflections or textures) or Illuminate (everything)",
+         &S::cs1230_stage, 0, 0, {"illuminate", "intersect"}, true},
     };
     return table;
 }
@@ -89,10 +94,12 @@ const Setting* find_setting(std::string_view name) {
     return nullptr;
 }
 
-void apply_mode_defaults(RenderSettings& s) {
+void apply_mode_defaults(RenderSettings& s, bool course_scene) {
     const bool path = s.mode == "path";  // §9.2: a path tracer's defaults
     if (!s.is_given("spp")) s.spp = path ? 64 : 1;
-    if (!s.is_given("max-depth")) s.max_depth = path ? 64 : 5;
+    if (!s.is_given("max-depth")) s.max_depth = path ? 64 : course_scene ? 4 : 5;
+    if (!s.is_given("width")) s.width = course_scene ? 1024 : 640;
+    if (!s.is_given("height")) s.height = course_scene ? 768 : 480;
 }
 
 std::string validate(RenderSettings& s) {
@@ -159,7 +166,8 @@ RenderJob make_render_job(const RenderSettings& s) {
     RenderJob job;
     job.width = s.width;
     job.height = s.height;
-    job.integrator = {*parse_render_mode(s.mode), s.max_depth};
+    job.integrator = {*parse_render_mode(s.mode), s.max_depth,
+                      cs1230::parse_stage(s.cs1230_stage).value_or(cs1230::Stage::Illuminate)};
     job.sampling.aa = s.aa;
     job.sampling.spp = s.spp;
     job.sampling.aa_threshold = s.aa_threshold;
@@ -185,6 +193,7 @@ LoadOptions make_load_options(const RenderSettings& s, std::size_t image_bytes) 
     lo.lenient = s.lenient;
     lo.threads = s.threads;  // --threads 1 means one thread for the build too
     lo.time = s.time;
+    lo.cs1230_stage = cs1230::parse_stage(s.cs1230_stage).value_or(cs1230::Stage::Illuminate);
     lo.textures.search_dirs = s.texture_dirs;
     lo.textures.missing = s.missing_textures == "checker" ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
     const std::size_t limit = memory_limit(s);

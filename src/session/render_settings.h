@@ -36,6 +36,7 @@ struct RenderSettings {
     std::string max_memory;  // "512M", "4G"; "" = the default
     double timeout = 0.0;     // seconds; 0 = none
     double time_limit = 0.0;  // seconds; 0 = none
+    std::string cs1230_stage = "illuminate";  // which course project draws a CSCI 1230 file (§9.5)
 
     std::set<std::string> given;
     bool is_given(std::string_view name) const { return given.count(std::string(name)) != 0; }
@@ -69,8 +70,9 @@ const Setting* find_setting(std::string_view name);
 const std::vector<const char*>& render_mode_names();
 
 // Sets every setting the user did not give to its default for s.mode (path: 64 samples per pixel
-// and 64 bounces; every other mode: the lab model's 1 and 5).
-void apply_mode_defaults(RenderSettings& s);
+// and 64 bounces; every other mode: the lab model's 1 and 5). A CSCI 1230 JSON scene (§9.5) is
+// drawn at the course's 1024 x 768 and depth 4 (the path tracer's 64 bounces still win in path mode).
+void apply_mode_defaults(RenderSettings& s, bool course_scene = false);
 
 // Checks what a range cannot and fills what depends on other settings: returns "" or the message
 // of a usage error. --aa-threshold with --spp > 1 becomes the noise threshold of adaptive sampling

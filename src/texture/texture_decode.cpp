@@ -85,7 +85,7 @@ bool decoded_past_the_end(std::string_view bytes, const unsigned char* data, int
 
 std::string decode_texture(std::string_view bytes, const TextureLimits& limits, TextureImage& out) {
     if (bytes.size() > std::size_t(INT_MAX)) return "the file is too large";
-    if (const char* format = undocumented_format(bytes))
+    if (const char* format = undocumented_format(bytes); format && !(limits.gif && starts_with(bytes, "GIF8")))
         return std::string("unsupported format (") + format + "): use PNG, JPEG, BMP, TGA or PPM";
     if (is_ascii_ppm(bytes)) {  // plain PPM (P3), which stb does not read: ascii_ppm.h
         std::string why;

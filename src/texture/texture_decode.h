@@ -15,9 +15,12 @@ struct TextureLimits {
     int max_side = 16384;                                 // texels across or down
     std::size_t max_texels = std::size_t(1) << 26;        // 64 Mi texels: 192 MB as 8-bit RGB
     std::size_t max_total_bytes = std::size_t(1) << 30;   // all textures of a scene together, as stored
+    // GIF (its first frame) is decoded only for the textures of CSCI 1230 files (scene-format.md
+    // §9.5: their course's renderer reads it, and the course ships one); refused otherwise (§8).
+    bool gif = false;
 };
 
-// Decodes PNG, BMP, TGA or binary PNM (P5/P6) with stb_image, JPEG with libjpeg (jpeg_decode.h),
+// Decodes PNG, BMP, TGA, binary PNM (P5/P6) and, with limits.gif, GIF with stb_image, JPEG with libjpeg (jpeg_decode.h),
 // plain PPM (P3) with ascii_ppm.h, into 8-bit RGB; alpha is dropped. Returns ""
 // or why not (without the file's name), e.g. "16384x16384 texels, more than the limit of ...".
 std::string decode_texture(std::string_view bytes, const TextureLimits& limits, TextureImage& out);

@@ -42,6 +42,22 @@ std::string tried_list(const std::vector<std::string>& tried) {
 
 }  // namespace
 
+ConfinedFolders::ConfinedFolders(const std::string& scene_path, const std::vector<std::string>& search_dirs) {
+    std::error_code ec;
+    roots_.push_back(fs::weakly_canonical(fs::absolute(fs::path(scene_path), ec).parent_path(), ec));
+    for (std::string d : search_dirs) {
+        std::replace(d.begin(), d.end(), '\\', '/');
+        roots_.push_back(fs::weakly_canonical(fs::absolute(fs::path(d), ec), ec));
+    }
+}
+
+bool ConfinedFolders::contains(const std::string& candidate) const {
+    std::error_code ec;
+    const fs::path real = fs::weakly_canonical(candidate, ec);
+    if (ec) return false;
+    return std::any_of(roots_.begin(), roots_.end(), [&](const fs::path& r) { return is_inside(real, r); });
+}
+
 TextureImage checker_texture() {
     // 8 × 8 squares of 8 × 8 texels each: bilinear filtering only softens the square edges, so
     // the board stays plainly visible (an 8 × 8-texel image would blur into a smooth gradient).
@@ -139,27 +155,14 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
     int checker = -1;
     auto& scene = flat.scene;
     TextureLimits left = options.limits;  // max_total_bytes shrinks as textures are loaded
-    std::vector<fs::path> roots;  // where a confined texture may be
-    if (options.confined) {
-        std::error_code ec;
-        roots.push_back(fs::weakly_canonical(fs::absolute(fs::path(scene_path), ec).parent_path(), ec));
-        for (std::string d : options.search_dirs) {
-            std::replace(d.begin(), d.end(), '\\', '/');
-            roots.push_back(fs::weakly_canonical(fs::absolute(fs::path(d), ec), ec));
-        }
-    }
-    auto allowed = [&](const std::string& candidate) {
-        if (!options.confined) return true;
-        std::error_code ec;
-        const fs::path real = fs::weakly_canonical(candidate, ec);
-        if (ec) return false;
-        return std::any_of(roots.begin(), roots.end(), [&](const fs::path& r) { return is_inside(real, r); });
-    };
+    const ConfinedFolders folders(scene_path, options.search_dirs);  // where a confined texture may be
+    auto allowed = [&](const std::string& candidate) { return !options.confined || folders.contains(candidate); };
 
     for (std::size_t m = 0; m < scene.materials.size(); ++m) {
         const ObjectDesc* src = flat.material_sources[m];
         if (!src || !src->material.texture) continue;
         const TextureRef& ref = *src->material.texture;
+        left.gif = ref.allow_gif;  // per texture: a CSCI 1230 file's may be GIF (§9.5)
         if (auto it = index_of_name.find(ref.file); it != index_of_name.end()) {
             scene.materials[m].texture = it->second;  // -1: already reported missing
             continue;

@@ -1,6 +1,7 @@
 #pragma once
 // Finds and decodes the textures a flattened scene's materials name (scene-format.md §8),
 // one decode per file however many objects use it.
+#include <filesystem>
 #include <map>
 #include <set>
 #include <string>
@@ -51,6 +52,18 @@ struct MissingTexture {
 // absolute and normalised, without repeats (a scene in the current directory tries it once).
 std::vector<std::string> texture_candidates(const std::string& name, const std::string& scene_path,
                                             const std::vector<std::string>& search_dirs);
+
+// The folders a file named by a scene from others (--untrusted) may be read from: the folder of
+// `scene_path` and each search dir, links and `..` followed. Textures and meshes alike.
+class ConfinedFolders {
+public:
+    ConfinedFolders(const std::string& scene_path, const std::vector<std::string>& search_dirs);
+    // Whether `candidate` (an existing path) is one of the folders or inside one, links followed.
+    bool contains(const std::string& candidate) const;
+
+private:
+    std::vector<std::filesystem::path> roots_;
+};
 
 // True for a name written as a Windows path: a `\` in it, or a drive letter (`C:`).
 bool is_windows_path(const std::string& name);

@@ -89,7 +89,7 @@ TEST_F(CompareImageRead, TgaAndPlainPpm) {
 }
 
 LinearImage linear_picture() {
-    LinearImage im{5, 3, std::vector<glm::vec3>(15)};
+    LinearImage im{5, 3, std::vector<glm::vec3>(15), {}};
     for (std::size_t i = 0; i < 15; ++i) im.rgb[i] = {float(i) * 0.25f, -0.5f + float(i), 100.0f / float(i + 1)};
     return im;
 }

@@ -10,7 +10,7 @@ namespace whitted {
 namespace {
 
 LinearImage filled(int w, int h, glm::vec3 c) {
-    return LinearImage{w, h, std::vector<glm::vec3>(std::size_t(w) * std::size_t(h), c)};
+    return LinearImage{w, h, std::vector<glm::vec3>(std::size_t(w) * std::size_t(h), c), {}};
 }
 
 // 2×2 grey 0.5; B has R = 0.75 in pixel (1, 0): one value of twelve differs, by 0.25.

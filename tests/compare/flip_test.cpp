@@ -27,7 +27,7 @@ namespace {
 using namespace flip;
 
 LinearImage filled(int w, int h, glm::vec3 c) {
-    return LinearImage{w, h, std::vector<glm::vec3>(std::size_t(w) * std::size_t(h), c)};
+    return LinearImage{w, h, std::vector<glm::vec3>(std::size_t(w) * std::size_t(h), c), {}};
 }
 
 // --- 1. The colour pipeline ---

@@ -12,7 +12,7 @@ namespace {
 constexpr double C1 = 1e-4, C2 = 9e-4;
 
 LinearImage filled(int w, int h, glm::vec3 c) {
-    return LinearImage{w, h, std::vector<glm::vec3>(std::size_t(w) * std::size_t(h), c)};
+    return LinearImage{w, h, std::vector<glm::vec3>(std::size_t(w) * std::size_t(h), c), {}};
 }
 
 // A checkerboard of single pixels, `lo` and `hi`, `lo` at (0, 0).
