@@ -143,13 +143,13 @@ void ViewerWindow::rebuild_recent_menu() {
             if (c == '/' || c == '\\' || c == '&' || c == '_') label += '\\';
             label += c;
         }
+        // The item's place in the submenu says which path it is (its user data is the window).
         menu_->add(("&File/Open &recent/" + label).c_str(), 0, [](Fl_Widget* w, void* v) {
             auto* self = static_cast<ViewerWindow*>(v);
-            const Fl_Menu_Item* item = static_cast<Fl_Menu_Bar*>(w)->mvalue();
-            if (!item) return;
-            const std::size_t i = std::size_t(item->argument());
-            if (i < self->recent_.size()) self->open_scene(std::string(self->recent_[i]));
-        }, reinterpret_cast<void*>(std::size_t(&path - recent_.data())));
+            auto* menu = static_cast<Fl_Menu_Bar*>(w);
+            const int at = menu->find_index("&File/Open &recent"), i = menu->value() - at - 1;
+            if (at >= 0 && i >= 0 && i < int(self->recent_.size())) self->open_scene(std::string(self->recent_[std::size_t(i)]));
+        }, this);
     }
 }
 

@@ -152,6 +152,39 @@ TEST_F(ViewerWorkbench, RecentFilesAndTheWindowSizeSurviveARestart) {
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
+// File > Open recent > (an entry) opens that scene (it used to take the entry's index for the
+// window and crash).
+TEST_F(ViewerWorkbench, OpenRecentOpensTheChosenScene) {
+    const std::string red_scene = scene_;
+    scene_ = dir_ + "/blue.sc";
+    {
+        auto viewer = start_viewer({});
+        Ready r;
+        ASSERT_TRUE(wait_for_ready(*viewer, ready_, r, [](const Ready& n) { return n.state == "finished"; }))
+            << viewer->output();
+        viewer->signal(SIGTERM);
+        ASSERT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+    }
+    fs::remove(ready_);
+    scene_ = red_scene;
+    auto viewer = start_viewer({});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    ASSERT_EQ(first.recent, (std::vector<std::string>{red_scene, dir_ + "/blue.sc"}));
+    // The File menu, its second item (Open recent), that submenu's second entry: blue.sc.
+    keys("--delay 250 alt+f Down Down Right Down Return");
+    Ready opened;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, opened,
+                               [&](const Ready& n) { return n.job > first.job && n.state == "finished"; }, 30s))
+        << "no new render after choosing the recent scene:\n" << viewer->output();
+    EXPECT_EQ(opened.recent.front(), dir_ + "/blue.sc");
+    EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/opened.png"), blue_, opened.image))
+        << "see " << dir_ << "/opened.png";
+    viewer->signal(SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
 // Zoom with '+' (2x, nearest neighbour: each image pixel a 2 x 2 block) and exposure with ']'
 // (one stop: each byte doubled, clamped), about the centre of the area.
 TEST_F(ViewerWorkbench, ZoomShowsPixelsAsBlocksAndExposureDoublesTheBytes) {
