@@ -77,6 +77,15 @@ bool ImageView::to_image(int wx, int wy, int& ix, int& iy) const {
     return image.width > 0 && ix >= 0 && iy >= 0 && ix < image.width && iy < image.height;
 }
 
+ScreenRect ImageView::visible() const {
+    const int ix = image_x(), iy = image_y();
+    const double s = scale();
+    const int x0 = std::max(ix, x()), y0 = std::max(iy, y());
+    const int x1 = std::min(ix + int(std::ceil(image.width * s)), x() + w());
+    const int y1 = std::min(iy + int(std::ceil(image.height * s)), y() + h());
+    return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+}
+
 void ImageView::resize(int X, int Y, int W, int H) {
     Fl_Widget::resize(X, Y, W, H);
     clamp_pan();

@@ -14,6 +14,11 @@
 
 namespace whitted::viewer {
 
+// A rectangle in window coordinates.
+struct ScreenRect {
+    int x = 0, y = 0, w = 0, h = 0;
+};
+
 class ImageView : public Fl_Widget {
 public:
     ImageView(int x, int y, int w, int h);
@@ -54,6 +59,8 @@ public:
     // The image's top-left corner in window coordinates (may lie outside the widget).
     int image_x() const;
     int image_y() const;
+    // The part of the image that is visible, in window coordinates (empty without an image).
+    ScreenRect visible() const;
     // The image pixel shown at window point (wx, wy); false when the point is off the image.
     bool to_image(int wx, int wy, int& ix, int& iy) const;
 

@@ -11,7 +11,6 @@
 #include <FL/fl_ask.H>
 
 #include "inspect/report_text.h"
-#include "viewer_window.h"
 
 namespace whitted::viewer {
 
@@ -90,49 +89,15 @@ void InspectorWindow::open_line(const std::string& line) {
     if (const auto loc = location_in_line(line, base_dir_)) open_loc(*loc);
 }
 
-void InspectorWindow::open_loc(const SourceLoc& loc) {
+void InspectorWindow::open_loc(const SourceLoc& loc) { open_in_editor(loc); }
+
+void open_in_editor(const SourceLoc& loc) {
     const std::string editor = chosen_editor(std::getenv("VISUAL"), std::getenv("EDITOR"));
     if (editor.empty()) {
         fl_message("Set $VISUAL or $EDITOR to open %s:%d in your editor.", loc.file.c_str(), loc.line);
         return;
     }
     if (!launch_detached(editor_command(editor, loc))) fl_alert("Could not start the editor '%s'.", editor.c_str());
-}
-
-// The viewer window's side of the inspector (kept here, out of viewer_window.cpp).
-void ViewerWindow::inspect(int x, int y) {
-    if (!inspector_) inspector_ = std::make_unique<InspectorWindow>();
-    inspector_->show_result(inspect_shown_pixel(controller_, x, y));
-    if (!inspector_->shown()) inspector_->show();
-}
-
-void ViewerWindow::ask_inspect() {
-    const RenderController::Shown shown = controller_.shown();
-    if (!inspector_) inspector_ = std::make_unique<InspectorWindow>();
-    inspector_->show();
-    if (!shown.scene) return;
-    const char* answer = fl_input("Pixel to inspect, X,Y (column, row; row 0 at the top):", "0,0");
-    if (!answer) return;
-    int x = -1, y = -1;
-    char rest = 0;
-    if (std::sscanf(answer, "%d,%d%c", &x, &y, &rest) != 2) {
-        inspector_->show_result(inspect_message(std::string("not a pixel: '") + answer + "' (write X,Y)"));
-        return;
-    }
-    inspect(x, y);
-}
-
-// A double-clicked line of the messages panel: the FILE:LINE:COL it names, in the editor (paths
-// there are relative to the scene's folder, as in the inspector's report).
-void ViewerWindow::open_message_line(const std::string& line) {
-    const auto loc = location_in_line(line, scene_dir());
-    if (!loc) return;
-    const std::string editor = chosen_editor(std::getenv("VISUAL"), std::getenv("EDITOR"));
-    if (editor.empty()) {
-        fl_message("Set $VISUAL or $EDITOR to open %s:%d in your editor.", loc->file.c_str(), loc->line);
-        return;
-    }
-    if (!launch_detached(editor_command(editor, *loc))) fl_alert("Could not start the editor '%s'.", editor.c_str());
 }
 
 }  // namespace whitted::viewer

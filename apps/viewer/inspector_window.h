@@ -40,4 +40,7 @@ private:
     SourceLoc object_loc_;
 };
 
+// Opens $VISUAL or $EDITOR at loc's line, or says why it cannot.
+void open_in_editor(const SourceLoc& loc);
+
 }  // namespace whitted::viewer
