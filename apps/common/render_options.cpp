@@ -10,6 +10,8 @@
 #include "integrator/render_mode.h"
 #include "run_limits.h"
 #include "base/read_file.h"
+#include "parse/binary_sniff.h"
+#include "parse/parser.h"
 
 namespace whitted::cli {
 namespace {
@@ -109,7 +111,9 @@ std::string finish_render_options(RenderOptions& o, bool timeout_given) {
     if (o.output.empty()) o.output = default_output(o.scene_path, o.is_showcase);
     // An unknown format or a size it cannot hold, before the render.
     if (std::string problem = output_problem(o.width, o.height, o.output); !problem.empty()) return problem;
-    if (same_file(o.output, o.scene_path))
+    // (An image given as the scene, `whitted out.png`, is let through: its load says what it is.)
+    if (same_file(o.output, o.scene_path) &&
+        !binary_file_kind(read_regular_file(o.scene_path, ParseOptions{}.max_file_bytes).bytes))
         return "the output '" + o.output + "' is the scene file itself; name another with -o";
     using Untrusted = UntrustedLimits;
     if (o.untrusted && (o.width > Untrusted::kImageSide || o.height > Untrusted::kImageSide))

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "camera_navigation.h"
-#include "camera_text.h"
 #include "flatten/flatten.h"
 
 namespace whitted::viewer {
@@ -66,10 +65,18 @@ void CameraSession::apply(RenderJob& job) const {
     if (camera_) job.camera = make_camera(*camera_);  // the view the user moved to stays
 }
 
-std::string CameraSession::save_into(const std::string& scene_path) {
+CameraSave CameraSession::plan_save(const std::string& scene_path) const {
     const std::optional<CameraDesc> cam = current();
-    if (!cam) return "no camera to save: open a scene that loads";
-    const std::string err = save_camera_into_file(scene_path, *cam);
+    if (!cam) {
+        CameraSave none;
+        none.error = "no camera to save: open a scene that loads";
+        return none;
+    }
+    return plan_camera_save(scene_path, *cam);
+}
+
+std::string CameraSession::save(const CameraSave& plan) {
+    const std::string err = commit_camera_save(plan);
     if (err.empty()) camera_.reset();  // the file's camera is this one now
     return err;
 }

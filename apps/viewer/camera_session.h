@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "camera_text.h"
 #include "description/scene_description.h"
 #include "render/render_job.h"
 
@@ -35,9 +36,11 @@ public:
     // The render job's camera: the moved one; the job's own (the file's) when not moved.
     void apply(RenderJob& job) const;
 
-    // Writes the camera on screen into the scene file in place of its camera block (camera_text.h);
-    // the file's camera is then this one. "" or the error (the file and the session unchanged).
-    std::string save_into(const std::string& scene_path);
+    // The camera on screen written into the scene file (camera_text.h): first planned (the block
+    // that will be written, to ask about), then done, if the file has not changed meanwhile. The
+    // file's camera is then this one. "" or the error (the file and the session unchanged).
+    CameraSave plan_save(const std::string& scene_path) const;
+    std::string save(const CameraSave& plan);
 
 private:
     bool begin_drag();

@@ -12,7 +12,9 @@ namespace whitted::viewer {
 ImageView::ImageView(int x, int y, int w, int h) : Fl_Widget(x, y, w, h) {
     box(FL_FLAT_BOX);
     color(fl_rgb_color(48, 48, 48));
-    visible_focus(0);  // takes the keyboard (fly keys) without drawing a focus box
+    // Takes the keyboard (its keys are the view's: the menus' shortcuts); draw() draws no focus
+    // box. (Without visible focus FLTK would never give it the focus: Fl::focus() ignores such a widget.)
+    visible_focus(1);
     set_exposure(0.0f);
 }
 
@@ -153,17 +155,24 @@ int ImageView::handle(int event) {
         case FL_ENTER:
             return 1;  // to get FL_MOVE
         case FL_LEAVE:
+            hover_x_ = hover_y_ = -1;
             if (on_hover) on_hover(-1, -1);
             return 1;
         case FL_MOVE: {
             int ix = -1, iy = -1;
             const bool on = to_image(Fl::event_x(), Fl::event_y(), ix, iy);
             if (on_hover) on ? on_hover(ix, iy) : on_hover(-1, -1);
-            if (on && (Fl::event_state() & FL_SHIFT) && on_inspect) on_inspect(ix, iy);
+            // Shift+hover inspects a pixel other than the one shown (a window appearing sends moves that
+            // did not move).
+            if (on && (Fl::event_state() & FL_SHIFT) && on_inspect && (ix != hover_x_ || iy != hover_y_)) {
+                hover_x_ = ix;
+                hover_y_ = iy;
+                on_inspect(ix, iy);
+            }
             return 1;
         }
         case FL_PUSH:
-            if (Fl::focus() != this) take_focus();
+            if (Fl::focus() != this) take_focus();  // the keys are the view's again
             button_ = Fl::event_button();
             press_x_ = Fl::event_x();
             press_y_ = Fl::event_y();
@@ -198,7 +207,11 @@ int ImageView::handle(int event) {
                 }
             } else if (button_ == FL_LEFT_MOUSE) {
                 int ix = -1, iy = -1;
-                if (to_image(press_x_, press_y_, ix, iy) && on_inspect) on_inspect(ix, iy);
+                if (to_image(press_x_, press_y_, ix, iy) && on_inspect) {
+                    hover_x_ = ix;
+                    hover_y_ = iy;
+                    on_inspect(ix, iy);
+                }
             }
             dragging_ = false;
             button_ = 0;

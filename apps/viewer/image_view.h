@@ -80,6 +80,7 @@ private:
     int button_ = 0, press_x_ = 0, press_y_ = 0;
     bool shift_at_press_ = false, dragging_ = false;
     double pan_at_press_x_ = 0, pan_at_press_y_ = 0;
+    int hover_x_ = -1, hover_y_ = -1;  // the pixel inspected last (-1: none since the pointer came)
 };
 
 }  // namespace whitted::viewer

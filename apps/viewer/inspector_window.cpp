@@ -1,5 +1,6 @@
 #include "inspector_window.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -9,8 +10,10 @@
 #include <FL/Fl_Text_Buffer.H>
 #include <FL/Fl_Text_Display.H>
 #include <FL/fl_ask.H>
+#include <FL/fl_draw.H>
 
 #include "inspect/report_text.h"
+#include "viewer_util.h"
 
 namespace whitted::viewer {
 
@@ -76,13 +79,39 @@ void InspectorWindow::show_result(const InspectResult& r) {
     object_loc_ = r.ok && r.report.hit ? r.report.hit->object.loc : SourceLoc{};
     if (object_loc_.line > 0) {
         open_label_ = "Open " + display_loc(object_loc_, base_dir_) + " in the editor";
-        open_->copy_label(open_label_.c_str());
         open_->activate();
     } else {
-        open_->copy_label("Open the object's line");
+        open_label_ = "Open the object's line";
         open_->deactivate();
     }
+    layout_buttons();
     redraw();
+}
+
+void InspectorWindow::resize(int X, int Y, int W, int H) {
+    Fl_Double_Window::resize(X, Y, W, H);
+    if (open_) layout_buttons();
+}
+
+// The bottom row: Copy, then the Open button as wide as its label (a long path loses its start to
+// an ellipsis; the tooltip has it all), then the hint in what is left.
+void InspectorWindow::layout_buttons() {
+    const int y = h() - kPad - kButtonH, open_x = kPad + 98, margins = 24;
+    const int max_w = std::max(160, w() - open_x - kPad - 160);  // the hint keeps some room
+    fl_font(open_->labelfont(), open_->labelsize());
+    std::string label = open_label_;
+    if (object_loc_.line > 0 && fl_width(label.c_str()) + margins > max_w) {
+        const std::string head = "Open ", tail = " in the editor";
+        const double room = max_w - margins - fl_width((head + tail).c_str());
+        label = head + fit_width(display_loc(object_loc_, base_dir_), room, /*keep_end=*/true) + tail;
+    }
+    open_->copy_label(escape_label(label).c_str());
+    open_->copy_tooltip(label == open_label_ ? nullptr : escape_label(open_label_).c_str());
+    const int open_w = std::min(max_w, int(fl_width(label.c_str())) + margins);
+    open_->resize(open_x, y, open_w, kButtonH);
+    copy_->resize(kPad, y, 90, kButtonH);
+    const int hint_x = open_x + open_w + 8;
+    hint_->resize(hint_x, y, std::max(0, w() - kPad - hint_x), kButtonH);
 }
 
 void InspectorWindow::open_line(const std::string& line) {

@@ -29,8 +29,11 @@ public:
     // Opens the editor at the location named on `line` of the report; a message when it cannot.
     void open_line(const std::string& line);
 
+    void resize(int x, int y, int w, int h) override;
+
 private:
     void open_loc(const SourceLoc& loc);
+    void layout_buttons();
 
     ReportDisplay* display_ = nullptr;
     Fl_Text_Buffer* buffer_ = nullptr;

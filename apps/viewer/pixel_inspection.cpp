@@ -16,10 +16,16 @@ InspectorWindow& PixelInspection::window() {
     return *window_;
 }
 
+// Showing the inspector's window for the first time hands events to the image meanwhile (the
+// pointer is over it, Shift still held): they must not inspect again while this one is under way,
+// or each would show the window again, recursing until the stack runs out.
 void PixelInspection::inspect(int x, int y) {
+    if (busy_) return;
+    busy_ = true;
     InspectorWindow& w = window();
     w.show_result(inspect_shown_pixel(controller_, x, y));
     if (!w.shown()) w.show();
+    busy_ = false;
 }
 
 void PixelInspection::ask() {

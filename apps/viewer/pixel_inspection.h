@@ -26,6 +26,7 @@ private:
 
     const RenderController& controller_;
     std::unique_ptr<InspectorWindow> window_;
+    bool busy_ = false;  // an inspection is under way
 };
 
 }  // namespace whitted::viewer

@@ -1,6 +1,7 @@
 #include "settings_bar.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +15,7 @@
 #include <FL/Fl_Choice.H>
 #include <FL/Fl_Menu_Bar.H>
 #include <FL/Fl_Spinner.H>
+#include <FL/Fl_Window.H>
 #include <FL/fl_ask.H>
 
 #include "viewer_util.h"
@@ -42,6 +44,8 @@ void ask_spinner(Fl_Spinner* s, const char* what) {
 SettingsBar* bar(void* v) { return static_cast<SettingsBar*>(v); }
 
 }  // namespace
+
+SettingsBar* SettingsBar::active_ = nullptr;
 
 // Made at their final sizes; layout() places them. Changing one renders again (after a moment, so
 // that typing a number renders once).
@@ -111,9 +115,43 @@ SettingsBar::SettingsBar(const RenderJob& settings, bool fit) : base_(settings) 
                    "arrive in passes, the image refining as you watch; Stop keeps the passes done");
     const int hw = int(std::max(1u, std::thread::hardware_concurrency()));
     threads_ = spinner("threads", "Threads", 8, 46, 1, 1024, st.threads > 0 ? st.threads : hw, "Worker threads");
+    active_ = this;
+    Fl::event_dispatch(dispatch);
 }
 
-SettingsBar::~SettingsBar() { Fl::remove_timeout(settled_cb, this); }
+SettingsBar::~SettingsBar() {
+    Fl::remove_timeout(settled_cb, this);
+    if (active_ == this) {
+        active_ = nullptr;
+        Fl::event_dispatch(nullptr);
+    }
+}
+
+bool SettingsBar::editing() const {
+    const Fl_Widget* f = Fl::focus();
+    for (const Fl_Spinner* s : {width_, height_, depth_, aa_, spp_, threads_})
+        if (f && (f == s || f->parent() == s)) return true;
+    return false;
+}
+
+// Every event passes here first (Fl::event_dispatch): a spinner's text field takes every printable
+// key (a number field drops the ones it cannot use), so the view's keys would never reach the menus.
+int SettingsBar::dispatch(int event, Fl_Window* window) {
+    SettingsBar* self = active_;
+    if (event == FL_KEYBOARD && self && self->focus_home_ && self->editing()) {
+        const char* text = Fl::event_text();
+        const bool plain = !(Fl::event_state() & (FL_CTRL | FL_ALT | FL_META)) && Fl::event_length() == 1;
+        const bool enter = Fl::event_key() == FL_Enter || Fl::event_key() == FL_KP_Enter;
+        if (plain && text[0] > ' ' && text[0] < 127 && !std::isdigit(static_cast<unsigned char>(text[0]))) {
+            Fl::focus(self->focus_home_);  // a view key: the field is done (its number is taken as it leaves)
+        } else if (enter) {
+            const int used = Fl::handle_(event, window);  // the field takes its number
+            Fl::focus(self->focus_home_);
+            return used;
+        }
+    }
+    return Fl::handle_(event, window);
+}
 
 void SettingsBar::add_menu_items(Fl_Menu_Bar& m) {
     m.add("&Render/&Width...", 0, [](Fl_Widget*, void* v) { ask_spinner(bar(v)->width_, "Image width"); }, this);
@@ -200,6 +238,11 @@ void SettingsBar::describe(std::ostream& out, int wx, int wy) const {
         out << "tool " << t.id << " " << wx + tw->x() - t.label_w << " " << wy + tw->y() << " " << t.label_w + tw->w()
             << " " << tw->h() << " " << (tw->visible() ? "shown" : "hidden") << "\n";
     }
+    const std::pair<const char*, const Fl_Spinner*> spinners[] = {{"width", width_}, {"height", height_},
+                                                                   {"depth", depth_}, {"aa", aa_},
+                                                                   {"spp", spp_},     {"threads", threads_}};
+    for (const auto& [id, sp] : spinners) out << "setting " << id << " " << int(sp->value()) << "\n";
+    out << "setting fit " << int(fit_->value()) << "\nsetting mode " << kModes[std::max(0, mode_->value())] << "\n";
 }
 
 void SettingsBar::changed_cb(Fl_Widget*, void* self) { bar(self)->changed(); }
@@ -210,8 +253,11 @@ void SettingsBar::changed() {
     Fl::add_timeout(0.4, settled_cb, this);
 }
 
+// The change is applied: a field being typed into is done (the keys are the view's again).
 void SettingsBar::settled_cb(void* self) {
-    if (bar(self)->on_change) bar(self)->on_change();
+    SettingsBar* b = bar(self);
+    if (b->focus_home_ && b->editing()) Fl::focus(b->focus_home_);
+    if (b->on_change) b->on_change();
 }
 
 // Render ▸ AA threshold (--aa-threshold): adaptive anti-aliasing, 0 = every pixel.

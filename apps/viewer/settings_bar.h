@@ -15,6 +15,7 @@ class Fl_Choice;
 class Fl_Menu_Bar;
 class Fl_Spinner;
 class Fl_Widget;
+class Fl_Window;
 
 namespace whitted::viewer {
 
@@ -43,8 +44,13 @@ public:
     // fit a window `window_w` wide are hidden (they come last, so the ones shown never move).
     void layout(int window_w);
     // For the ready file: a line "tool ID X Y W H shown|hidden" per tool, in root coordinates of a
-    // window at (wx, wy); x and w include the tool's label.
+    // window at (wx, wy), x and w including the tool's label; then "setting ID VALUE" per setting.
     void describe(std::ostream& out, int wx, int wy) const;
+
+    // Where the keys go when a field is done with them (the image, whose keys are the view's): a
+    // key that is not part of a number (a view key such as + or F), Enter, and the setting being
+    // applied (typing has paused) end the editing of a field.
+    void set_focus_home(Fl_Widget* home) { focus_home_ = home; }
 
     std::function<void()> on_render;  // the Render button, a new AA threshold: render now
     std::function<void()> on_stop;    // the Stop button
@@ -55,6 +61,8 @@ private:
     static void settled_cb(void* self);
     void changed();
     void ask_aa_threshold();
+    bool editing() const;  // the keyboard focus is in one of the spinners
+    static int dispatch(int event, Fl_Window* window);
 
     RenderJob base_;  // what the tools do not show comes from here
     Fl_Button *render_ = nullptr, *stop_ = nullptr;
@@ -69,6 +77,8 @@ private:
         int gap, label_w, w, h;  // space before it, then its label (drawn to its left), then the widget
     };
     std::vector<Tool> tools_;
+    Fl_Widget* focus_home_ = nullptr;
+    static SettingsBar* active_;  // the one whose keys dispatch() looks at
 };
 
 }  // namespace whitted::viewer

@@ -3,18 +3,45 @@
 #include <algorithm>
 #include <ostream>
 
+#include <FL/Fl.H>
 #include <FL/Fl_Box.H>
+#include <FL/fl_draw.H>
 
 #include "status_text.h"
 #include "viewer_util.h"
 
 namespace whitted::viewer {
+namespace {
+
+// A field of the status bar: its label (as given to FLTK, "@@" for '@') drawn as written, cut with
+// an ellipsis when the field is narrower than it (its tooltip has it all).
+class StatusField : public Fl_Box {
+public:
+    StatusField() : Fl_Box(0, 0, 10, kStatusH) {}
+    void draw() override {
+        draw_box();
+        std::string text;
+        for (const char* p = label() ? label() : ""; *p; ++p) {
+            if (*p == '@' && p[1] == '@') ++p;
+            text += *p;
+        }
+        // Where Fl_Widget::draw_label() puts a label aligned left inside.
+        const int X = x() + Fl::box_dx(box()) + 3, W = w() - Fl::box_dw(box()) - 6;
+        fl_font(labelfont(), labelsize());
+        fl_color(active_r() ? labelcolor() : fl_inactive(labelcolor()));
+        fl_push_clip(X, y(), std::max(0, W), h());
+        fl_draw(fit_width(text, W).c_str(), X, y() + Fl::box_dy(box()), W, h() - Fl::box_dh(box()), align(), nullptr, 0);
+        fl_pop_clip();
+    }
+};
+
+}  // namespace
 
 StatusBar::StatusBar() {
-    scene_ = new Fl_Box(0, 0, 10, kStatusH);
-    progress_ = new Fl_Box(0, 0, 10, kStatusH);
-    message_ = new Fl_Box(0, 0, 10, kStatusH);
-    pixel_ = new Fl_Box(0, 0, 10, kStatusH);
+    scene_ = new StatusField();
+    progress_ = new StatusField();
+    message_ = new StatusField();
+    pixel_ = new StatusField();
     for (Fl_Box* b : {scene_, progress_, message_, pixel_}) {
         b->box(FL_THIN_DOWN_BOX);
         b->align(FL_ALIGN_LEFT | FL_ALIGN_INSIDE | FL_ALIGN_CLIP);

@@ -97,21 +97,27 @@ void ViewerWindow::copy_camera() {
     set_message("copied: " + text);
 }
 
-// Replaces the camera block of the scene file with the camera on screen (asked first; atomic).
-// The file is then loaded again: its camera is now the one on screen, the same image.
+// Writes the camera on screen into the scene file's camera block (asked first, showing the block as
+// it will be written; atomic). The file is then loaded again: its camera is now the one on screen,
+// the same image.
 void ViewerWindow::save_camera_into_scene() {
-    const std::optional<CameraDesc> cam = camera_.current();
-    if (scene_.empty() || !cam) {
+    if (scene_.empty() || !camera_.current()) {
         set_message("error: no camera to save: open a scene that loads");
         return;
     }
+    const CameraSave plan = camera_.plan_save(scene_);
+    if (!plan.error.empty()) {
+        set_message("error: " + plan.error);
+        return;
+    }
     fl_message_title("Save camera into scene");
-    const std::string question = "Replace the camera block of " + base_name(scene_) +
-                                 " with the camera on screen?\n\n" + camera_block(*cam) +
+    const std::string question = std::string(plan.replacement.blocks ? "Write the camera on screen into the camera block of "
+                                                                     : "Add the camera on screen to the top of ") +
+                                 base_name(scene_) + ":\n\n" + plan.replacement.block +
                                  "\n\nEvery other byte of the file stays as it is.";
     const int answer = fl_choice("%s", "Cancel", "Replace", nullptr, question.c_str());
     if (quitting_ || answer != 1) return;
-    const std::string err = camera_.save_into(scene_);
+    const std::string err = camera_.save(plan);
     if (!err.empty()) {
         set_message("error: " + err);
         return;

@@ -79,7 +79,7 @@ void ViewerWindow::build_menus() {
             if (item) self(v)->fly_key(char(item->shortcut()));
         }, this);
 
-    m->add("&Help/&Keyboard shortcuts", FL_F + 1, [](Fl_Widget*, void*) { show_shortcuts_window(); }, nullptr);
+    m->add("&Help/&Keyboard shortcuts", FL_F + 1, [](Fl_Widget*, void* v) { show_shortcuts_window(*self(v)); }, this);
     preferences_.fill_recent_menu(*m, "&File/Open &recent", [this](const std::string& p) { open_scene(p); });
 }
 

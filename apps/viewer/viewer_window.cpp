@@ -72,7 +72,8 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     size_range(520, 300);
     callback([](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->quit(); }, this);
     layout();
-    view_->take_focus();
+    Fl::focus(view_);
+    settings_->set_focus_home(view_);
 
     Fl::add_timeout(0.1, poll_cb, this);
     watch_ = std::make_unique<WatchTimer>(
@@ -150,8 +151,11 @@ void ViewerWindow::open_scene(const std::string& path) {
     std::string title = "whitted-view: " + base_name(path);
     copy_label(title.c_str());
     camera_.reset();  // another scene: its own camera
-    preferences_.add_recent(path);
-    preferences_.fill_recent_menu(*menu_, "&File/Open &recent", [this](const std::string& p) { open_scene(p); });
+    std::error_code ec;
+    if (fs::is_regular_file(path, ec)) {  // a name that is no file is not worth opening again
+        preferences_.add_recent(path);
+        preferences_.fill_recent_menu(*menu_, "&File/Open &recent", [this](const std::string& p) { open_scene(p); });
+    }
     remember();
     render(true);
 }
@@ -264,8 +268,10 @@ void ViewerWindow::show_failure(const RenderStatus& st) {
     const bool failed = st.state == RenderState::Failed || st.state == RenderState::MissingTextures;
     std::vector<std::string> overlay;
     if (failed) {
-        overlay.push_back(st.state == RenderState::Failed ? "The scene could not be loaded (the last good image is kept):"
-                                                          : "Textures were not found:");
+        const bool kept = view_->image.width > 0;  // the first load has no good image to keep
+        overlay.push_back(st.state == RenderState::MissingTextures ? "Textures were not found:"
+                          : kept ? "The scene could not be loaded (the last good image is kept):"
+                                 : "The scene could not be loaded:");
         for (const auto& d : st.diagnostics)
             if (d.severity == Severity::Error)
                 for (const std::string& line : split_lines(relative_to_scene(d.str())))
@@ -313,6 +319,7 @@ void ViewerWindow::describe(std::ostream& out) const {
     if (const std::optional<CameraDesc> cam = camera_.current())
         out << "camera " << (camera_.moved() ? "moved " : "file ") << camera_block(*cam) << "\n";
     for (const std::string& r : preferences_.recent()) out << "recent " << r << "\n";
+    for (const std::string& line : view_->overlay) out << "banner " << line << "\n";
     settings_->describe(out, x(), y());
     status_->describe(out, x(), y());
     messages_->describe(out);

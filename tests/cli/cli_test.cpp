@@ -94,6 +94,21 @@ TEST(Cli, RefusesToWriteTheImageOverTheSceneFile) {
     }
 }
 
+// `whitted out.png` (an image given as the scene, no -o): the image would be its own output, but
+// the first thing to say is that it is no scene file; the image stays as it was.
+TEST(Cli, AnImageGivenAsTheSceneIsNamedForWhatItIs) {
+    std::string dir = test::make_temp_dir();
+    const std::string image(std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
+    std::string png = write_file(dir, "out.png", image);
+    auto r = run_process({test::cli_path(), png, "-q"});
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find(png + ":1:1: error: this is not a scene file (it looks like a PNG image)"), std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("is the scene file itself"), std::string::npos) << r.output;
+    std::ifstream in(png, std::ios::binary);
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), image);
+}
+
 TEST(Cli, ThousandsOfWarningsAreCountedNotAllPrinted) {
     std::string dir = test::make_temp_dir();
     std::string text = "mastersubgraph root [ trans [ object sphere [ ] ] ]\n";

@@ -213,6 +213,8 @@ struct Ready {
     bool dimmed = false;                             // the image is shown dimmed under an error banner
     std::vector<std::string> recent;                 // File > Open recent, most recent first
     double exposure = 0;                             // of the image view, in stops
+    std::map<std::string, std::string> settings;     // the tool bar's values, by tool
+    std::vector<std::string> banner;                 // the lines over the image area (an error)
 };
 
 inline Ready read_ready(const std::string& path) {
@@ -249,6 +251,10 @@ inline Ready read_ready(const std::string& path) {
             ls >> r.exposure;
         } else if (key == "recent") {
             r.recent.push_back(line.substr(std::min(line.size(), key.size() + 1)));
+        } else if (key == "setting" && ls >> name >> word) {
+            r.settings[name] = word;
+        } else if (key == "banner") {
+            r.banner.push_back(line.substr(std::min(line.size(), key.size() + 1)));
         }
     }
     return r;
