@@ -57,6 +57,9 @@ int run(int argc, char** argv) {
 
     RenderJob job = render_job(o, &interrupt_flag());
     if (pixel) return print_inspection(*loaded.scene, job, *pixel, o.scene_path);
+    if (const std::string hint = sampled_effects_hint(loaded.stats.effects, job.sampling, job.integrator.mode);
+        !hint.empty())
+        std::cerr << "whitted: note: " << hint << "\n";
     ProgressLine progress(job.tile_count(), !o.quiet && isatty(STDERR_FILENO));
     job.on_tile = [&](const Tile&) { progress.tile_done(); };
 

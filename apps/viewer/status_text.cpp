@@ -45,4 +45,11 @@ std::string progress_text(const RenderStatus& st) {
     return buf;
 }
 
+std::string render_hint(const RenderStatus& st) {
+    const bool rendered = st.state == RenderState::Rendering || st.state == RenderState::Finished ||
+                          st.state == RenderState::Stopped;
+    if (!rendered) return "";
+    return sampled_effects_hint(st.load_stats.effects, st.settings.sampling, st.settings.integrator.mode);
+}
+
 }  // namespace whitted::viewer

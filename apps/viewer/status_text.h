@@ -13,4 +13,8 @@ std::string load_summary(const RenderStatus& st);
 // "rendering 320×240: 40% (12/30 tiles), 1.2 s", "done 320×240 in 0.50 s", "the scene has errors", ...
 std::string progress_text(const RenderStatus& st);
 
+// What a render of the scene cannot show at its settings (sampled_effects_hint), once it renders;
+// "" otherwise. For the status bar when there is no message.
+std::string render_hint(const RenderStatus& st);
+
 }  // namespace whitted::viewer

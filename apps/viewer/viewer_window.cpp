@@ -16,6 +16,7 @@
 #include "scripted_report.h"
 #include "settings_bar.h"
 #include "status_bar.h"
+#include "status_text.h"
 #include "viewer_util.h"
 #include "watch_timer.h"
 
@@ -240,7 +241,9 @@ void ViewerWindow::poll() {
     show_failure(st);
     settings_->set_busy(is_busy(st.state));
 
-    status_->update(scene_, st, extra_message_.empty() ? relative_to_scene(st.message) : extra_message_);
+    std::string message = extra_message_.empty() ? relative_to_scene(st.message) : extra_message_;
+    if (message.empty()) message = render_hint(st);
+    status_->update(scene_, st, message);
     switch (messages_->update(st, extra_message_, [this](const std::string& t) { return relative_to_scene(t); })) {
         case MessagesPanel::Change::Shown: layout(); [[fallthrough]];
         case MessagesPanel::Change::Text: report_->changed(); break;

@@ -160,6 +160,37 @@ TEST_F(ViewerOnScreen, AStatusTextCutShortEndsInAnEllipsis) {
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
+// A scene with a disc light rendered with one sample per pixel shows hard shadows (the light's
+// centre): the status bar says so, and says nothing once the samples show them.
+TEST_F(ViewerOnScreen, OneSamplePerPixelOfSoftShadowsIsToldInTheStatusBar) {
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"tesseract"}));
+    std::ofstream(scene_) << "camera [ eye 0 0 5 focus 0 0 0 angle 40 ]\n"
+                             "light [ position 3 4 5 radius 0.5 ]\n"
+                             "mastersubgraph root [ trans [ object sphere [ diffuse 0.9 0.1 0.1 ] ] ]\n";
+    {
+        auto viewer = start_viewer({});
+        Ready r;
+        ASSERT_TRUE(wait_for_ready(*viewer, ready_, r, [](const Ready& n) { return n.state == "finished"; }))
+            << viewer->output();
+        EXPECT_EQ(drawn_text(r.labels["message"]).rfind(" this scene has soft shadows: raise SPP to see them", 0), 0u)
+            << r.labels["message"];
+        const std::string png = dir_ + "/screen.png";
+        grab_screen(x_.display(), png);
+        const std::string text = screen_text(png, r.fields["message"], Lines::One);
+        EXPECT_TRUE(reads(text, "this scene has soft shadows: raise SPP")) << text << " (see " << png << ")";
+        viewer->signal(SIGTERM);
+        EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+    }
+    fs::remove(ready_);
+    auto viewer = start_viewer({"--spp", "4"});
+    Ready r;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, r, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    EXPECT_EQ(r.labels["message"].find("raise SPP"), std::string::npos) << r.labels["message"];
+    viewer->signal(SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
 }  // namespace
 }  // namespace whitted
 #endif
