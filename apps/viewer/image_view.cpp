@@ -79,6 +79,59 @@ bool ImageView::to_image(int wx, int wy, int& ix, int& iy) const {
     return image.width > 0 && ix >= 0 && iy >= 0 && ix < image.width && iy < image.height;
 }
 
+glm::vec2 ImageView::to_window(const glm::vec2& p) const {
+    const double s = scale();
+    return {float(image_x() + p.x * s), float(image_y() + p.y * s)};
+}
+
+// The ray tree over the image: lines two pixels wide, marks outlined in black so that they show on
+// any colour. Inside the visible image only.
+void ImageView::draw_rays() const {
+    if (rays.empty() || image.width <= 0) return;
+    const ScreenRect vis = visible();
+    fl_push_clip(vis.x, vis.y, vis.w, vis.h);
+    fl_line_style(FL_SOLID | FL_CAP_ROUND, 2);
+    for (const OverlayLine& l : rays.lines) {
+        const glm::vec2 a = to_window(l.a), b = to_window(l.b);
+        fl_color(l.color.x, l.color.y, l.color.z);
+        fl_line(int(std::floor(a.x)), int(std::floor(a.y)), int(std::floor(b.x)), int(std::floor(b.y)));
+    }
+    fl_line_style(FL_SOLID, 1);
+    for (const OverlayMark& m : rays.marks) {
+        const glm::vec2 c = to_window(m.at);
+        const int x = int(std::floor(c.x)), y = int(std::floor(c.y));
+        switch (m.shape) {
+            case MarkShape::Hit:
+                fl_color(m.color.x, m.color.y, m.color.z);
+                fl_rectf(x - 2, y - 2, 5, 5);
+                fl_color(FL_BLACK);
+                fl_rect(x - 3, y - 3, 7, 7);
+                break;
+            case MarkShape::Blocked:
+                fl_line_style(FL_SOLID, 2);
+                fl_color(m.color.x, m.color.y, m.color.z);
+                fl_line(x - 4, y - 4, x + 4, y + 4);
+                fl_line(x - 4, y + 4, x + 4, y - 4);
+                fl_line_style(FL_SOLID, 1);
+                break;
+            case MarkShape::Light:
+                fl_color(m.color.x, m.color.y, m.color.z);
+                fl_pie(x - 4, y - 4, 9, 9, 0, 360);
+                fl_color(FL_BLACK);
+                fl_arc(x - 4, y - 4, 9, 9, 0, 360);
+                break;
+            case MarkShape::TotalInternalReflection:
+                fl_color(m.color.x, m.color.y, m.color.z);
+                fl_polygon(x, y - 6, x + 6, y, x, y + 6, x - 6, y);
+                fl_color(FL_BLACK);
+                fl_loop(x, y - 6, x + 6, y, x, y + 6, x - 6, y);
+                break;
+        }
+    }
+    fl_line_style(0);
+    fl_pop_clip();
+}
+
 ScreenRect ImageView::visible() const {
     const int ix = image_x(), iy = image_y();
     const double s = scale();
@@ -129,6 +182,7 @@ void ImageView::draw() {
             fl_draw_image(buffer_.data(), x0, y0, bw, bh, 3, 0);
         }
     }
+    if (have_image) draw_rays();
     if (!overlay.empty()) {
         // A banner at the top of the area: the image (if any) stays visible, dimmed, below it.
         fl_font(FL_HELVETICA, 14);

@@ -11,6 +11,7 @@
 #include <FL/Fl_Widget.H>
 
 #include "film/image.h"
+#include "ray_overlay.h"
 
 namespace whitted::viewer {
 
@@ -28,6 +29,8 @@ public:
     // area when there is no image yet. The first line is the title.
     std::vector<std::string> overlay;
     bool dimmed = false;
+    // Drawn over the image: the inspected pixel's ray tree (image pixel coordinates).
+    RayOverlay rays;
 
     // Camera gestures. Drag kinds: Orbit (left drag), Pan (middle drag, Shift + left drag).
     enum class Drag { Orbit, Pan };
@@ -61,6 +64,8 @@ public:
     int image_y() const;
     // The part of the image that is visible, in window coordinates (empty without an image).
     ScreenRect visible() const;
+    // The window point where image point p (image pixel coordinates, not rounded) is shown.
+    glm::vec2 to_window(const glm::vec2& p) const;
     // The image pixel shown at window point (wx, wy); false when the point is off the image.
     bool to_image(int wx, int wy, int& ix, int& iy) const;
 
@@ -70,6 +75,7 @@ public:
 
 private:
     void clamp_pan();
+    void draw_rays() const;
     bool fit_ = false;
     double zoom_ = 1.0;            // when not fitting
     double pan_x_ = 0, pan_y_ = 0;  // offset of the image's centre from the area's centre, screen px

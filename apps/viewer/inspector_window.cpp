@@ -7,6 +7,8 @@
 #include <FL/Fl.H>
 #include <FL/Fl_Box.H>
 #include <FL/Fl_Button.H>
+#include <FL/Fl_Check_Button.H>
+#include <FL/Fl_Value_Slider.H>
 #include <FL/Fl_Text_Buffer.H>
 #include <FL/Fl_Text_Display.H>
 #include <FL/fl_ask.H>
@@ -38,12 +40,19 @@ private:
 };
 
 namespace {
-constexpr int kW = 760, kH = 520, kPad = 8, kButtonH = 28;
-}
+// The report on top; under it the ray tree's row (draw it, its depth, the colours), then the buttons.
+constexpr int kW = 760, kH = 560, kPad = 8, kButtonH = 28;
+// The colours of ray_overlay.h, named.
+constexpr struct {
+    const char* label;
+    unsigned char r, g, b;
+} kLegend[] = {{"reflected", 60, 140, 255}, {"refracted", 255, 150, 30}, {"shadow: lit", 40, 220, 40},
+               {"blocked", 230, 30, 30},     {"through glass", 230, 230, 60}, {"TIR", 255, 230, 0}};
+}  // namespace
 
 InspectorWindow::InspectorWindow() : Fl_Double_Window(kW, kH, "Pixel inspector") {
     buffer_ = new Fl_Text_Buffer();
-    display_ = new ReportDisplay(kPad, kPad, kW - 2 * kPad, kH - 3 * kPad - kButtonH, *this);
+    display_ = new ReportDisplay(kPad, kPad, kW - 2 * kPad, kH - 4 * kPad - 2 * kButtonH, *this);
     display_->buffer(buffer_);
     display_->textfont(FL_COURIER);
     display_->textsize(13);
@@ -62,6 +71,29 @@ InspectorWindow::InspectorWindow() : Fl_Double_Window(kW, kH, "Pixel inspector")
                        "Click a pixel; Shift+hover follows the mouse");
     hint_->align(FL_ALIGN_INSIDE | FL_ALIGN_LEFT | FL_ALIGN_CLIP);
     hint_->labelsize(12);
+    tree_on_ = new Fl_Check_Button(0, 0, 130, kButtonH, "Draw ray tree");
+    tree_on_->value(1);
+    tree_on_->tooltip("Draw the inspected sample's rays over the image, projected with the render's camera");
+    tree_depth_ = new Fl_Value_Slider(0, 0, 160, kButtonH - 6, "Depth");
+    tree_depth_->type(FL_HOR_NICE_SLIDER);
+    tree_depth_->align(FL_ALIGN_LEFT);
+    tree_depth_->step(1);
+    tree_depth_->bounds(0, 0);
+    tree_depth_->tooltip("The bounces drawn: 0 is the camera ray's hit and its shadow rays (also View > Ray tree depth)");
+    auto changed = [](Fl_Widget*, void* v) {
+        auto* w = static_cast<InspectorWindow*>(v);
+        if (w->on_tree) w->on_tree(w->tree_on_->value() != 0, int(w->tree_depth_->value()));
+    };
+    tree_on_->callback(changed, this);
+    tree_depth_->callback(changed, this);
+    for (const auto& l : kLegend) {
+        auto* b = new Fl_Box(0, 0, 60, kButtonH, l.label);
+        b->labelsize(12);
+        b->labelcolor(fl_rgb_color(l.r, l.g, l.b));
+        b->box(FL_FLAT_BOX);
+        b->color(fl_rgb_color(48, 48, 48));  // the image area's grey: the colours as drawn over a picture
+        legend_.push_back(b);
+    }
     end();
     resizable(display_);
     show_result(inspect_message("Click a pixel of the image (or hover over it with Shift held) to see what made it."));
@@ -90,7 +122,7 @@ void InspectorWindow::show_result(const InspectResult& r) {
 
 void InspectorWindow::resize(int X, int Y, int W, int H) {
     Fl_Double_Window::resize(X, Y, W, H);
-    if (open_) layout_buttons();
+    if (tree_on_) layout_buttons();
 }
 
 // The bottom row: Copy, then the Open button as wide as its label (a long path loses its start to
@@ -112,6 +144,26 @@ void InspectorWindow::layout_buttons() {
     copy_->resize(kPad, y, 90, kButtonH);
     const int hint_x = open_x + open_w + 8;
     hint_->resize(hint_x, y, std::max(0, w() - kPad - hint_x), kButtonH);
+    // The ray tree's row, above: the check box, the slider (its label to its left), the legend.
+    const int ty = y - kPad - kButtonH;
+    tree_on_->resize(kPad, ty, 130, kButtonH);
+    tree_depth_->resize(kPad + 130 + 48, ty + 3, 130, kButtonH - 6);
+    int lx = kPad + 130 + 48 + 130 + 12;
+    for (Fl_Box* b : legend_) {  // each as wide as its name; those that no longer fit are hidden
+        fl_font(b->labelfont(), b->labelsize());
+        const int bw = int(fl_width(b->label())) + 10;
+        b->resize(lx, ty + 3, bw, kButtonH - 6);
+        if (lx + bw <= w() - kPad) b->show();
+        else b->hide();
+        lx += bw + 2;
+    }
+}
+
+void InspectorWindow::set_tree(int deepest, int depth, bool on) {
+    tree_depth_->bounds(0, std::max(0, deepest));
+    tree_depth_->value(std::clamp(depth, 0, std::max(0, deepest)));
+    tree_on_->value(on);
+    tree_depth_->redraw();
 }
 
 void InspectorWindow::open_line(const std::string& line) {

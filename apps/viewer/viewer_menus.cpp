@@ -69,6 +69,8 @@ void ViewerWindow::build_menus() {
     m->add("&View/&Exposure up", ']', [](Fl_Widget*, void* v) { self(v)->change_exposure(1); }, this);
     m->add("&View/E&xposure down", '[', [](Fl_Widget*, void* v) { self(v)->change_exposure(-1); }, this);
     m->add("&View/Exposure &0", '\\', [](Fl_Widget*, void* v) { self(v)->change_exposure(0); }, this, FL_MENU_DIVIDER);
+    m->add("&View/Ray &tree depth...", 0, [](Fl_Widget*, void* v) { self(v)->inspection_->ask_depth(); }, this,
+           FL_MENU_DIVIDER);
     m->add("&View/&Camera to the file's (Home)", FL_Home, call<&ViewerWindow::home>, this);
     // The fly keys, here so that they are found (and work wherever the focus is not a text field).
     const std::pair<char, const char*> fly[] = {{'w', "forwards"}, {'s', "backwards"}, {'a', "left"},

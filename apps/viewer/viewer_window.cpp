@@ -65,10 +65,11 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     messages_ = std::make_unique<MessagesPanel>([this](const std::string& line) { open_message_line(line); });
     status_ = std::make_unique<StatusBar>();
     end();
-    inspection_ = std::make_unique<PixelInspection>(controller_);
+    inspection_ = std::make_unique<PixelInspection>(controller_, *view_);
     report_ = std::make_unique<ScriptedReport>(
         ScriptOptions{options_.screenshot, options_.ready_file, options_.exit_when_done}, *this, *view_, controller_,
         [this](std::ostream& out) { describe(out); }, [this] { quit(); });
+    inspection_->on_drawn = [this] { report_->changed(); };
     resizable(this);  // our resize() lays the children out itself
     size_range(520, 300);
     callback([](Fl_Widget*, void* v) { static_cast<ViewerWindow*>(v)->quit(); }, this);
@@ -235,7 +236,10 @@ void ViewerWindow::poll() {
     controller_.reap();
     const RenderStatus st = controller_.status();
 
-    if (controller_.copy_image_if_changed(view_->image, image_version_)) view_->redraw();
+    if (controller_.copy_image_if_changed(view_->image, image_version_)) {
+        view_->redraw();
+        inspection_->image_of_job(st.job);  // a ray tree drawn over another render's image goes
+    }
     // The file's camera, once a load got that far (Home and the first move start from it).
     if (st.state == RenderState::Rendering || st.state == RenderState::Finished) camera_.file_loaded(st.file_camera);
     show_failure(st);
@@ -323,6 +327,14 @@ void ViewerWindow::describe(std::ostream& out) const {
         out << "camera " << (camera_.moved() ? "moved " : "file ") << camera_block(*cam) << "\n";
     for (const std::string& r : preferences_.recent()) out << "recent " << r << "\n";
     for (const std::string& line : view_->overlay) out << "banner " << line << "\n";
+    // The ray tree drawn over the image, in root coordinates (ends of lines, places of marks).
+    const auto root = [&](const glm::vec2& p) {
+        const glm::vec2 w = view_->to_window(p);
+        return std::to_string(x() + w.x) + " " + std::to_string(y() + w.y);
+    };
+    for (const OverlayLine& l : view_->rays.lines)
+        out << "ray " << ray_kind_name(l.kind) << " " << l.depth << " " << root(l.a) << " " << root(l.b) << "\n";
+    for (const OverlayMark& m : view_->rays.marks) out << "mark " << mark_shape_name(m.shape) << " " << root(m.at) << "\n";
     settings_->describe(out, x(), y());
     status_->describe(out, x(), y());
     messages_->describe(out);
