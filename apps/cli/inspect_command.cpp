@@ -1,5 +1,6 @@
 #include "inspect_command.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -39,6 +40,9 @@ std::string write_text_file(const std::string& path, const std::string& text) {
         if (ok) done += std::size_t(n);
     }
     const int err = errno;
+    const mode_t mask = ::umask(0);  // mkstemp made it 0600: give it the mode a new file gets
+    ::umask(mask);
+    if (ok) ::fchmod(fd, 0666 & ~mask);
     ok = (::close(fd) == 0) && ok;
     if (!ok || ::rename(tmp.c_str(), path.c_str()) != 0) {
         const int e = ok ? errno : err;

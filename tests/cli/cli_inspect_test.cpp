@@ -1,5 +1,7 @@
 // `whitted SCENE --inspect X,Y`: the report as a user reads it, checked against the scene's text
 // and against the image the same settings render.
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -165,6 +167,11 @@ TEST(CliInspect, ExportsTheRayTreeAsObjAndJson) {
     }
     ASSERT_EQ(lines, 7);
     ASSERT_EQ(v.size(), 14u);
+    struct stat st{};
+    ASSERT_EQ(stat((dir + "/tree.obj").c_str(), &st), 0);
+    const mode_t mask = umask(0);
+    umask(mask);
+    EXPECT_EQ(st.st_mode & 0777, 0666 & ~mask) << "the mode of any new file";
     // Segment 2 (the reflected ray): vertices 5 and 6.
     EXPECT_NEAR(v[4].x, test::kMirrorHit.x, 1e-3f);
     EXPECT_NEAR(v[4].z, test::kMirrorHit.z, 1e-3f);
