@@ -16,8 +16,21 @@ struct PixelArg {
 // is wrong with it in `error`.
 std::optional<PixelArg> parse_pixel_arg(const std::string& text, int width, int height, std::string& error);
 
-// Prints the report of pixel `p` of `job`'s image of the loaded scene to stdout, paths shown
-// relative to the scene's folder. Returns the exit code.
-int print_inspection(const Scene& scene, const RenderJob& job, const PixelArg& p, const std::string& scene_path);
+// What else --inspect gives: the pixel's ray tree written to a file (.obj polylines or .json), and
+// printed as JSON instead of the text report.
+struct InspectOutputs {
+    std::string ray_tree_file;
+    bool json = false;
+};
+
+// "" or what is wrong with these outputs (a file name that is neither .obj nor .json, a folder that
+// cannot be written to).
+std::string inspect_outputs_problem(const InspectOutputs& outputs);
+
+// Prints the report of pixel `p` of `job`'s image of the loaded scene to stdout (or its ray tree
+// as JSON), paths shown relative to the scene's folder, and writes the ray tree file if asked.
+// Returns the exit code.
+int print_inspection(const Scene& scene, const RenderJob& job, const PixelArg& p, const std::string& scene_path,
+                     const InspectOutputs& outputs = {});
 
 }  // namespace whitted::cli

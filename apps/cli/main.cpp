@@ -52,7 +52,13 @@ int run(int argc, char** argv) {
                    "object and the scene lines above it, material, lights, shadows, reflected and refracted rays, "
                    "and its colour in parts. Renders nothing else, writes no image")
         ->type_name("X,Y");
-    if (int code = parse_render_options(app, o, argc, argv, "whitted", Frontend::Cli); code != kExitOk)
+    InspectOutputs inspect_outputs;
+    app.add_option("--ray-tree", inspect_outputs.ray_tree_file,
+                   "With --inspect: also write the pixel's ray tree (the camera, shadow, reflected and refracted "
+                   "rays of its detailed sample, every bounce) to FILE: .obj (polylines, which Blender opens) or .json")
+        ->type_name("FILE");
+    app.add_flag("--json", inspect_outputs.json, "With --inspect: print the pixel's ray tree as JSON instead of the report");
+        if (int code = parse_render_options(app, o, argc, argv, "whitted", Frontend::Cli); code != kExitOk)
         return code < 0 ? 0 : code;
     const RenderSettings& s = o.settings;
     std::optional<PixelArg> pixel;
@@ -63,6 +69,14 @@ int run(int argc, char** argv) {
             std::cerr << "whitted: error: " << problem << "\n";
             return kExitUsage;
         }
+    }
+    if (!pixel && (!inspect_outputs.ray_tree_file.empty() || inspect_outputs.json)) {
+        std::cerr << "whitted: error: --ray-tree and --json go with --inspect X,Y (the pixel whose rays they give)\n";
+        return kExitUsage;
+    }
+    if (const std::string problem = inspect_outputs_problem(inspect_outputs); !problem.empty()) {
+        std::cerr << "whitted: error: " << problem << "\n";
+        return problem.rfind("--ray-tree", 0) == 0 ? kExitUsage : kExitIo;
     }
     // A missing folder or a read-only one is found now, not after a long render (as POV-Ray does).
     if (std::string problem = pixel ? "" : output_unwritable(o.output); !problem.empty()) {
@@ -82,7 +96,10 @@ int run(int argc, char** argv) {
     if (int code = report_load(loaded, o, "whitted", limit_ran_out()); code != kExitOk) return code;
 
     RenderJob job = render_job(o, &interrupt_flag());
-    if (pixel) return print_inspection(*loaded.scene, job, *pixel, o.scene_path);
+    if (pixel) return print_inspection(*loaded.scene, job, *pixel, o.scene_path, inspect_outputs);
+    if (const std::string hint = sampled_effects_hint(loaded.stats.effects, job.sampling, job.integrator.mode);
+        !hint.empty())
+        std::cerr << "whitted: note: " << hint << "\n";
 
     Session session(loaded.scene, job);
     const int passes = int(session.pass_ends().size());

@@ -10,6 +10,8 @@
 #include "film/image_io.h"
 #include "base/read_file.h"
 #include "session/run_limits.h"
+#include "parse/binary_sniff.h"
+#include "parse/parser.h"
 
 namespace whitted::cli {
 namespace {
@@ -101,7 +103,9 @@ std::string finish_render_options(CLI::App& app, RenderOptions& o, Frontend fron
     const RenderSettings& s = o.settings;
     // An unknown format or a size it cannot hold, before the render.
     if (std::string problem = output_problem(s.width, s.height, o.output); !problem.empty()) return problem;
-    if (same_file(o.output, o.scene_path))
+    // (An image given as the scene, `whitted out.png`, is let through: its load says what it is.)
+    if (same_file(o.output, o.scene_path) &&
+        !binary_file_kind(read_regular_file(o.scene_path, ParseOptions{}.max_file_bytes).bytes))
         return "the output '" + o.output + "' is the scene file itself; name another with -o";
     const std::size_t limit = memory_limit(s);
     o.for_image = image_memory(s.width, s.height, o.output, make_render_job(s).sampling);

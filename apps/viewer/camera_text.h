@@ -24,18 +24,32 @@ struct BlockSpan {
 
 struct CameraReplacement {
     std::string text;   // the new file contents (when error is empty)
+    std::string block;  // the camera block in it as written there (what to show the user)
     std::string error;  // e.g. a camera block that is never closed
     int blocks = 0;     // camera blocks found in the old text
 };
 
-// The scene text with its camera replaced by `camera`. Several camera blocks: the format merges them
-// keyword by keyword, later ones winning (scene-format.md §5), so the last block is replaced by a
-// complete one and the earlier ones are kept. No camera block: the new one goes at the top.
+// The scene text with its camera made `camera`, every byte outside the last camera block kept.
+// That block is edited in place: the numbers of its keywords that change are rewritten, and the
+// keywords it lacks are added before its `]` only where the camera would otherwise differ (the
+// format merges several blocks keyword by keyword, later ones winning: scene-format.md §5, so
+// earlier blocks count); its comments and layout stay. No camera block: a new one goes at the top.
 CameraReplacement replace_camera_block(std::string_view text, const CameraDesc& camera);
 
-// Replaces the camera block of the scene file at `path`, atomically: the new text goes to a
-// temporary file in the same folder, which is renamed over the old one (keeping its permissions).
-// Returns "" or an error message; on error the file is untouched.
+// A save of the camera into a scene file, planned on the file's text as it is now.
+struct CameraSave {
+    std::string path, old_text;
+    CameraReplacement replacement;
+    std::string error;  // the file could not be read, or its text not made sense of
+};
+CameraSave plan_camera_save(const std::string& path, const CameraDesc& camera);
+
+// Writes a planned save, atomically (a temporary file in the same folder, renamed over the old one,
+// keeping its permissions), if the file still holds the text it was planned on. "" or an error;
+// on error the file is untouched.
+std::string commit_camera_save(const CameraSave& plan);
+
+// Both at once.
 std::string save_camera_into_file(const std::string& path, const CameraDesc& camera);
 
 }  // namespace whitted::viewer

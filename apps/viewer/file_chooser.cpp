@@ -23,12 +23,20 @@ struct NameField {
     void* fltk_data;
 };
 
+//
+// A path typed from the root ('/', '~' or '$' first) went wrong another way: at each '/' FLTK moved
+// the chooser to the folder typed so far (the first '/' to the list of file systems, emptying the
+// field) and rewrote the field, garbling it ("/tmp/x/out.png" became "/tmpx/out.png/x/..."). Such a
+// path is left alone while it is typed; Enter hands it to FLTK, which opens a folder or takes the file.
 void name_typed(Fl_Widget* w, void* data) {
     auto* field = static_cast<NameField*>(data);
     auto* input = static_cast<Fl_Input*>(w);
     const std::string typed = input->value();
     const char* dir = field->chooser->directory();
-    if (!typed.empty() && typed[0] != '/' && typed[0] != '~' && typed[0] != '$' && dir && dir[0]) {
+    const bool from_root = !typed.empty() && (typed[0] == '/' || typed[0] == '~' || typed[0] == '$');
+    const bool enter = Fl::event_key() == FL_Enter || Fl::event_key() == FL_KP_Enter;
+    if (from_root && !enter) return;
+    if (!typed.empty() && !from_root && dir && dir[0]) {
         std::string folder = dir;
         if (folder.back() != '/') folder += '/';
         const int shift = int(folder.size()), position = input->position(), mark = input->mark();

@@ -12,7 +12,9 @@ namespace whitted::viewer {
 ImageView::ImageView(int x, int y, int w, int h) : Fl_Widget(x, y, w, h) {
     box(FL_FLAT_BOX);
     color(fl_rgb_color(48, 48, 48));
-    visible_focus(0);  // takes the keyboard (fly keys) without drawing a focus box
+    // Takes the keyboard (its keys are the view's: the menus' shortcuts); draw() draws no focus
+    // box. (Without visible focus FLTK would never give it the focus: Fl::focus() ignores such a widget.)
+    visible_focus(1);
     set_exposure(0.0f);
 }
 
@@ -77,6 +79,68 @@ bool ImageView::to_image(int wx, int wy, int& ix, int& iy) const {
     return image.width > 0 && ix >= 0 && iy >= 0 && ix < image.width && iy < image.height;
 }
 
+glm::vec2 ImageView::to_window(const glm::vec2& p) const {
+    const double s = scale();
+    return {float(image_x() + p.x * s), float(image_y() + p.y * s)};
+}
+
+// The ray tree over the image: lines two pixels wide, marks outlined in black so that they show on
+// any colour. Inside the visible image only.
+void ImageView::draw_rays() const {
+    if (rays.empty() || image.width <= 0) return;
+    const ScreenRect vis = visible();
+    fl_push_clip(vis.x, vis.y, vis.w, vis.h);
+    fl_line_style(FL_SOLID | FL_CAP_ROUND, 2);
+    for (const OverlayLine& l : rays.lines) {
+        const glm::vec2 a = to_window(l.a), b = to_window(l.b);
+        fl_color(l.color.x, l.color.y, l.color.z);
+        fl_line(int(std::floor(a.x)), int(std::floor(a.y)), int(std::floor(b.x)), int(std::floor(b.y)));
+    }
+    fl_line_style(FL_SOLID, 1);
+    for (const OverlayMark& m : rays.marks) {
+        const glm::vec2 c = to_window(m.at);
+        const int x = int(std::floor(c.x)), y = int(std::floor(c.y));
+        switch (m.shape) {
+            case MarkShape::Hit:
+                fl_color(m.color.x, m.color.y, m.color.z);
+                fl_rectf(x - 2, y - 2, 5, 5);
+                fl_color(FL_BLACK);
+                fl_rect(x - 3, y - 3, 7, 7);
+                break;
+            case MarkShape::Blocked:
+                fl_line_style(FL_SOLID, 2);
+                fl_color(m.color.x, m.color.y, m.color.z);
+                fl_line(x - 4, y - 4, x + 4, y + 4);
+                fl_line(x - 4, y + 4, x + 4, y - 4);
+                fl_line_style(FL_SOLID, 1);
+                break;
+            case MarkShape::Light:
+                fl_color(m.color.x, m.color.y, m.color.z);
+                fl_pie(x - 4, y - 4, 9, 9, 0, 360);
+                fl_color(FL_BLACK);
+                fl_arc(x - 4, y - 4, 9, 9, 0, 360);
+                break;
+            case MarkShape::TotalInternalReflection:
+                fl_color(m.color.x, m.color.y, m.color.z);
+                fl_polygon(x, y - 6, x + 6, y, x, y + 6, x - 6, y);
+                fl_color(FL_BLACK);
+                fl_loop(x, y - 6, x + 6, y, x, y + 6, x - 6, y);
+                break;
+        }
+    }
+    fl_line_style(0);
+    fl_pop_clip();
+}
+
+ScreenRect ImageView::visible() const {
+    const int ix = image_x(), iy = image_y();
+    const double s = scale();
+    const int x0 = std::max(ix, x()), y0 = std::max(iy, y());
+    const int x1 = std::min(ix + int(std::ceil(image.width * s)), x() + w());
+    const int y1 = std::min(iy + int(std::ceil(image.height * s)), y() + h());
+    return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+}
+
 void ImageView::resize(int X, int Y, int W, int H) {
     Fl_Widget::resize(X, Y, W, H);
     clamp_pan();
@@ -118,6 +182,7 @@ void ImageView::draw() {
             fl_draw_image(buffer_.data(), x0, y0, bw, bh, 3, 0);
         }
     }
+    if (have_image) draw_rays();
     if (!overlay.empty()) {
         // A banner at the top of the area: the image (if any) stays visible, dimmed, below it.
         fl_font(FL_HELVETICA, 14);
@@ -144,17 +209,24 @@ int ImageView::handle(int event) {
         case FL_ENTER:
             return 1;  // to get FL_MOVE
         case FL_LEAVE:
+            hover_x_ = hover_y_ = -1;
             if (on_hover) on_hover(-1, -1);
             return 1;
         case FL_MOVE: {
             int ix = -1, iy = -1;
             const bool on = to_image(Fl::event_x(), Fl::event_y(), ix, iy);
             if (on_hover) on ? on_hover(ix, iy) : on_hover(-1, -1);
-            if (on && (Fl::event_state() & FL_SHIFT) && on_inspect) on_inspect(ix, iy);
+            // Shift+hover inspects a pixel other than the one shown (a window appearing sends moves that
+            // did not move).
+            if (on && (Fl::event_state() & FL_SHIFT) && on_inspect && (ix != hover_x_ || iy != hover_y_)) {
+                hover_x_ = ix;
+                hover_y_ = iy;
+                on_inspect(ix, iy);
+            }
             return 1;
         }
         case FL_PUSH:
-            if (Fl::focus() != this) take_focus();
+            if (Fl::focus() != this) take_focus();  // the keys are the view's again
             button_ = Fl::event_button();
             press_x_ = Fl::event_x();
             press_y_ = Fl::event_y();
@@ -189,7 +261,11 @@ int ImageView::handle(int event) {
                 }
             } else if (button_ == FL_LEFT_MOUSE) {
                 int ix = -1, iy = -1;
-                if (to_image(press_x_, press_y_, ix, iy) && on_inspect) on_inspect(ix, iy);
+                if (to_image(press_x_, press_y_, ix, iy) && on_inspect) {
+                    hover_x_ = ix;
+                    hover_y_ = iy;
+                    on_inspect(ix, iy);
+                }
             }
             dragging_ = false;
             button_ = 0;

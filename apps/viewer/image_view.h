@@ -11,8 +11,14 @@
 #include <FL/Fl_Widget.H>
 
 #include "film/image.h"
+#include "ray_overlay.h"
 
 namespace whitted::viewer {
+
+// A rectangle in window coordinates.
+struct ScreenRect {
+    int x = 0, y = 0, w = 0, h = 0;
+};
 
 class ImageView : public Fl_Widget {
 public:
@@ -23,6 +29,8 @@ public:
     // area when there is no image yet. The first line is the title.
     std::vector<std::string> overlay;
     bool dimmed = false;
+    // Drawn over the image: the inspected pixel's ray tree (image pixel coordinates).
+    RayOverlay rays;
 
     // Camera gestures. Drag kinds: Orbit (left drag), Pan (middle drag, Shift + left drag).
     enum class Drag { Orbit, Pan };
@@ -54,6 +62,10 @@ public:
     // The image's top-left corner in window coordinates (may lie outside the widget).
     int image_x() const;
     int image_y() const;
+    // The part of the image that is visible, in window coordinates (empty without an image).
+    ScreenRect visible() const;
+    // The window point where image point p (image pixel coordinates, not rounded) is shown.
+    glm::vec2 to_window(const glm::vec2& p) const;
     // The image pixel shown at window point (wx, wy); false when the point is off the image.
     bool to_image(int wx, int wy, int& ix, int& iy) const;
 
@@ -63,6 +75,7 @@ public:
 
 private:
     void clamp_pan();
+    void draw_rays() const;
     bool fit_ = false;
     double zoom_ = 1.0;            // when not fitting
     double pan_x_ = 0, pan_y_ = 0;  // offset of the image's centre from the area's centre, screen px
@@ -73,6 +86,7 @@ private:
     int button_ = 0, press_x_ = 0, press_y_ = 0;
     bool shift_at_press_ = false, dragging_ = false;
     double pan_at_press_x_ = 0, pan_at_press_y_ = 0;
+    int hover_x_ = -1, hover_y_ = -1;  // the pixel inspected last (-1: none since the pointer came)
 };
 
 }  // namespace whitted::viewer

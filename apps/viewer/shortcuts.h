@@ -18,7 +18,7 @@ inline constexpr Shortcut kShortcuts[] = {
     {"F / 1", "Fit the image to the area / show it 1:1"},
     {"+ / -", "Zoom the picture in / out (up to 16x, nearest neighbour)"},
     {"] / [ / \\", "Exposure up / down one stop / back to 0 (linear images)"},
-    {"Left click, Shift+hover", "Inspect the pixel: its object's line, material, lights, colour parts"},
+    {"Left click, Shift+hover", "Inspect the pixel: its object's line, material, lights, colour parts, ray tree"},
     {"Ctrl+I", "Inspect a pixel given by its column and row"},
     {"Double-click a message", "Open the scene in $VISUAL or $EDITOR at the message's line"},
     {"Ctrl+Shift+C", "Copy the camera as a camera [ ... ] block"},

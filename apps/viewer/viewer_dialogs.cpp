@@ -1,23 +1,19 @@
-// The viewer window's dialogs: scene time, missing textures, open, save image, and the camera's
-// way back into the scene text (copy, save into the scene).
-#include <algorithm>
+// The viewer window's commands that ask something: scene time, missing textures, open, save image,
+// and the camera's way back into the scene text (copy, save into the scene).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
 #include <FL/Fl.H>
-#include <FL/Fl_Box.H>
-#include <FL/Fl_Browser.H>
-#include <FL/Fl_Button.H>
-#include <FL/Fl_Double_Window.H>
-#include <FL/Fl_Return_Button.H>
 #include <FL/fl_ask.H>
-#include <FL/fl_draw.H>
 
 #include "camera_text.h"
 #include "file_chooser.h"
 #include "film/image_io.h"
+#include "inspect_action.h"
+#include "inspector_window.h"
+#include "texture_dialog.h"
 #include "viewer_util.h"
 #include "viewer_window.h"
 
@@ -26,48 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Asks whether to pick the file for a texture that was not found, listing every path tried (in a
-// browser, which scrolls when there are many). 1 = choose a file, 0 = use the checkerboard.
-int ask_texture_dialog(const MissingTexture& mt, const std::string& where, const Fl_Window& parent) {
-    const int W = 640, line_h = 17, rows = std::clamp(int(mt.tried.size()), 2, 14);
-    const std::string about = escape_label("The texture \"" + mt.name + "\" (" + where + ") could not be loaded: " +
-                                           mt.reason + ".\n\nLooked at " + std::to_string(mt.tried.size()) +
-                                           (mt.tried.size() == 1 ? " place:" : " places:"));
-    int text_w = W - 20, text_h = 0;
-    fl_font(FL_HELVETICA, FL_NORMAL_SIZE);
-    fl_measure(about.c_str(), text_w, text_h);  // wrapped at the dialog's width
-    const int list_y = 10 + text_h + 6, list_h = rows * line_h + 6, question_y = list_y + list_h + 6;
-    Fl_Double_Window dlg(W, question_y + 24 + 50, "Texture not found");
-    auto* text = new Fl_Box(10, 10, W - 20, text_h);
-    text->align(FL_ALIGN_LEFT | FL_ALIGN_TOP | FL_ALIGN_INSIDE | FL_ALIGN_WRAP);
-    text->copy_label(about.c_str());
-    auto* list = new Fl_Browser(10, list_y, W - 20, list_h);
-    list->textfont(FL_COURIER);
-    list->textsize(13);
-    for (const std::string& p : mt.tried) list->add(("@." + p).c_str());
-    auto* question = new Fl_Box(10, question_y, W - 20, 24, "Choose the image file to use for it?");
-    question->align(FL_ALIGN_LEFT | FL_ALIGN_INSIDE);
-    int answer = 0;
-    auto* cancel = new Fl_Button(W - 340, dlg.h() - 38, 180, 28, "Cancel (checkerboard)");
-    auto* choose = new Fl_Return_Button(W - 150, dlg.h() - 38, 140, 28, "Choose file...");
-    cancel->callback([](Fl_Widget* b, void*) { b->window()->hide(); });
-    choose->callback([](Fl_Widget* b, void* a) {
-        *static_cast<int*>(a) = 1;
-        b->window()->hide();
-    }, &answer);
-    dlg.end();
-    dlg.resizable(list);
-    dlg.set_modal();
-    dlg.position(parent.x() + (parent.w() - dlg.w()) / 2, parent.y() + std::max(0, (parent.h() - dlg.h()) / 2));
-    dlg.show();
-    // Ends when a button or Escape closes it, or when quitting hides every window.
-    while (dlg.shown()) Fl::wait();
-    return answer;
-}
-
-
 }  // namespace
-
 
 // Scene time t of `velocity` / `angularrate` (scene-format.md §9.4): asked for, then rendered.
 void ViewerWindow::ask_time() {
@@ -86,34 +41,13 @@ void ViewerWindow::ask_time() {
     render();
 }
 
-
 void ViewerWindow::ask_for_textures(const RenderStatus& st) {
-    bool declined = false;
-    std::string declined_names;  // for the status bar: which textures are checkerboards now
-    std::set<std::string>& declined_here = declined_textures_[scene_];
-    for (const MissingTexture& mt : st.missing_textures) {
-        if (declined_here.count(mt.name)) continue;  // answered before: drawn as a checkerboard
-        std::string where = base_name(mt.loc.file.empty() ? scene_ : mt.loc.file) + " line " + std::to_string(mt.loc.line);
-        const int answer = ask_texture_dialog(mt, where, *this);
-        if (quitting_) return;
-        std::string picked;
-        if (answer == 1)
-            picked = choose_file_to_open("Texture \"" + mt.name + "\"",
-                                         "Images (*.{bmp,png,jpg,jpeg,ppm,pgm,tga,gif,psd,hdr,pic})\tAll Files (*)",
-                                         scene_dir())
-                         .path;
-        if (quitting_) return;
-        if (picked.empty()) {
-            declined = true;
-            declined_here.insert(mt.name);
-            declined_names += (declined_names.empty() ? "'" : ", '") + mt.name + "'";
-        } else {
-            texture_overrides_[scene_][mt.name] = picked;
-        }
-    }
-    if (declined) extra_message_ = "";
+    const TextureAnswers answers = whitted::viewer::ask_for_textures(st.missing_textures, scene_, scene_dir(), textures_,
+                                                                     *this, [this] { return quitting_; });
+    if (answers.interrupted) return;
     render(true);
-    if (declined) set_message("warning: texture " + declined_names + " drawn as a checkerboard (not found)");
+    if (!answers.declined.empty())
+        set_message("warning: texture " + answers.declined + " drawn as a checkerboard (not found)");
 }
 
 void ViewerWindow::choose_and_open() {
@@ -150,10 +84,9 @@ void ViewerWindow::save_image_as() {
                              : "saved " + path);
 }
 
-
 // The camera on screen as a `camera [ … ]` block, on the clipboard (and the selection buffer).
 void ViewerWindow::copy_camera() {
-    const std::optional<CameraDesc> cam = current_camera();
+    const std::optional<CameraDesc> cam = camera_.current();
     if (!cam) {
         set_message("error: no camera yet: open a scene that loads");
         return;
@@ -164,28 +97,39 @@ void ViewerWindow::copy_camera() {
     set_message("copied: " + text);
 }
 
-// Replaces the camera block of the scene file with the camera on screen (asked first; atomic).
-// The file is then loaded again: its camera is now the one on screen, the same image.
+// Writes the camera on screen into the scene file's camera block (asked first, showing the block as
+// it will be written; atomic). The file is then loaded again: its camera is now the one on screen,
+// the same image.
 void ViewerWindow::save_camera_into_scene() {
-    const std::optional<CameraDesc> cam = current_camera();
-    if (scene_.empty() || !cam) {
+    if (scene_.empty() || !camera_.current()) {
         set_message("error: no camera to save: open a scene that loads");
         return;
     }
+    const CameraSave plan = camera_.plan_save(scene_);
+    if (!plan.error.empty()) {
+        set_message("error: " + plan.error);
+        return;
+    }
     fl_message_title("Save camera into scene");
-    const std::string question = "Replace the camera block of " + base_name(scene_) +
-                                 " with the camera on screen?\n\n" + camera_block(*cam) +
+    const std::string question = std::string(plan.replacement.blocks ? "Write the camera on screen into the camera block of "
+                                                                     : "Add the camera on screen to the top of ") +
+                                 base_name(scene_) + ":\n\n" + plan.replacement.block +
                                  "\n\nEvery other byte of the file stays as it is.";
     const int answer = fl_choice("%s", "Cancel", "Replace", nullptr, question.c_str());
     if (quitting_ || answer != 1) return;
-    const std::string err = save_camera_into_file(scene_, *cam);
+    const std::string err = camera_.save(plan);
     if (!err.empty()) {
         set_message("error: " + err);
         return;
     }
-    camera_.reset();  // the file's camera is this one now
     render(true);
     set_message("saved the camera into " + scene_);
+}
+
+// A double-clicked line of the messages panel: the FILE:LINE:COL it names, in the editor (paths
+// there are relative to the scene's folder, as in the inspector's report).
+void ViewerWindow::open_message_line(const std::string& line) {
+    if (const auto loc = location_in_line(line, scene_dir())) open_in_editor(*loc);
 }
 
 }  // namespace whitted::viewer

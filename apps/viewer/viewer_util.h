@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <FL/Enumerations.H>
+#include <FL/fl_draw.H>
 
 namespace whitted::viewer {
 
@@ -40,6 +41,31 @@ inline std::vector<std::string> split_lines(const std::string& text) {
         lines.push_back(text.substr(start, nl - start));
     lines.push_back(text.substr(start));
     return lines;
+}
+
+// `text` within `max_w` pixels in the current font (fl_font): whole if it fits, else cut at a
+// character boundary with an ellipsis where its end (or, keep_end, its start) was.
+inline std::string fit_width(const std::string& text, double max_w, bool keep_end = false) {
+    static const std::string ellipsis = "\xE2\x80\xA6";
+    if (fl_width(text.c_str()) <= max_w) return text;
+    auto boundary = [&](std::size_t i) { return i >= text.size() || (static_cast<unsigned char>(text[i]) & 0xC0) != 0x80; };
+    std::string best = ellipsis;
+    if (keep_end) {
+        for (std::size_t from = text.size(); from-- > 0;) {
+            if (!boundary(from)) continue;
+            const std::string t = ellipsis + text.substr(from);
+            if (fl_width(t.c_str()) > max_w) break;
+            best = t;
+        }
+    } else {
+        for (std::size_t n = 1; n <= text.size(); ++n) {
+            if (!boundary(n)) continue;
+            const std::string t = text.substr(0, n) + ellipsis;
+            if (fl_width(t.c_str()) > max_w) break;
+            best = t;
+        }
+    }
+    return best;
 }
 
 }  // namespace whitted::viewer

@@ -1,32 +1,33 @@
 #pragma once
-// The viewer's main window (FLTK 1.3). Everything here runs on the UI thread; rendering happens in
-// the RenderController's threads, which this window polls ten times a second.
-#include <map>
-#include <optional>
+// The viewer's main window (FLTK 1.3): it lays out the menu bar, the settings bar, the image, the
+// messages panel and the status bar, and wires them to the render controller and to the parts of
+// the session that have a file of their own (camera, preferences, missing textures, the watch
+// timer, the pixel inspector, the scripted report). Everything here runs on the UI thread;
+// rendering happens in the RenderController's threads, which this window polls ten times a second.
+#include <cstdint>
+#include <iosfwd>
 #include <memory>
-#include <set>
 #include <string>
 #include <vector>
 
 #include <FL/Fl_Double_Window.H>
 
-#include "image_view.h"
-#include "messages_view.h"
+#include "camera_session.h"
+#include "preferences.h"
 #include "render_controller.h"
+#include "texture_memory.h"
 
 class Fl_Menu_Bar;
-class Fl_Button;
-class Fl_Spinner;
-class Fl_Check_Button;
-class Fl_Choice;
-class Fl_Box;
-class Fl_Text_Display;
-class Fl_Text_Buffer;
-class Fl_Value_Slider;
 
 namespace whitted::viewer {
 
-class InspectorWindow;  // [inspector]
+class ImageView;
+class MessagesPanel;
+class PixelInspection;
+class ScriptedReport;
+class SettingsBar;
+class StatusBar;
+class WatchTimer;
 
 struct ViewerOptions {
     std::string scene;                       // "" = start empty
@@ -55,121 +56,67 @@ public:
     void open_scene(const std::string& path);  // and render it
     void render(bool force_reload = false);
     void stop();
-    void ask_time();  // Render ▸ Scene time: asks for t, then renders
-    void inspect(int x, int y);  // [inspector] shows the report of image pixel (x, y) (inspector_window.cpp)
-    void ask_inspect();          // [inspector] Render ▸ Inspect pixel: asks for X,Y
-    void open_message_line(const std::string& line);  // a double-clicked message: its FILE:LINE in the editor
     void quit();
-    int exit_code() const { return exit_code_; }
+    int exit_code() const;
     bool quitting() const { return quitting_; }
 
     void resize(int x, int y, int w, int h) override;
     int handle(int event) override;
 
-    // The camera: moved on the image, back to the file's (Home), into the text.
-    void home();
+    // The menus' commands (viewer_menus.cpp, viewer_dialogs.cpp).
+    void choose_and_open();
+    void save_image_as();
     void copy_camera();
     void save_camera_into_scene();
+    void ask_time();  // Render ▸ Scene time: asks for t, then renders
+    void home();
     void fly_key(char key);
     enum class Zoom { Fit, One, In, Out };
     void zoom_view(Zoom how);
     void change_exposure(int stops);  // 0 = back to 0
-    void ask_aa_threshold();
+    void open_message_line(const std::string& line);  // a double-clicked message: its FILE:LINE in the editor
 
 private:
     static void poll_cb(void* self);
-    static void watch_cb(void* self);
-    static void done_cb(void* self);
     static void fit_cb(void* self);
-    void poll();
-    void watch();
-    void fit_to_area();
-    void when_done();
-    void layout();
-    void layout_toolbar();
-    void layout_status();
     void build_menus();
-    void build_toolbar();
     void connect_view();
+    void layout();
+    void poll();
+    void show_failure(const RenderStatus& st);  // the banner over the (dimmed) last good image
+    void fit_to_area();
     void render_view();  // renders with the camera on screen, coarse frames first
-    std::optional<CameraDesc> current_camera() const;  // the one on screen, if known
-    void show_shortcuts();
-    void remember();  // recent files, window size and settings into the preferences
-    void add_recent(const std::string& path);
-    void rebuild_recent_menu();
-    void load_preferences();
-    void settings_changed();
-    static void settings_cb(void* self);
-    std::string watch_stamp() const;  // the scene file's and its textures' stamps
-    std::string relative_to_scene(std::string text) const;
-    void read_controls(RenderJob& settings, bool& fit);
-    void update_status(const RenderStatus& st);
-    void show_messages(const RenderStatus& st);
     void ask_for_textures(const RenderStatus& st);
-    void choose_and_open();
-    void save_image_as();
+    void remember();  // recent files, window size and settings into the preferences
+    void describe(std::ostream& out) const;  // the ready file's lines
     LoadOptions load_options() const;
     void set_message(const std::string& text);
     std::string scene_dir() const;
-    struct Rect {
-        int x, y, w, h;
-    };
-    Rect visible_image() const;
-    static void ready_cb(void* self);
-    void write_ready_file();
-    void rewrite_ready_file_soon();
+    std::string relative_to_scene(std::string text) const;
 
     ViewerOptions options_;
     RenderController controller_;
+    Preferences preferences_;
+    CameraSession camera_;
+    TextureMemory textures_;  // the user's answers about missing textures
 
+    // Widgets (the window owns and deletes them) and the parts that make some.
     Fl_Menu_Bar* menu_ = nullptr;
-    Fl_Button *render_button_ = nullptr, *stop_button_ = nullptr;
-    Fl_Spinner *width_ = nullptr, *height_ = nullptr, *depth_ = nullptr, *aa_ = nullptr, *spp_ = nullptr, *threads_ = nullptr;
-    Fl_Check_Button* fit_ = nullptr;
-    Fl_Choice* mode_ = nullptr;
-    // The tool bar's widgets, left to right, with the size each was made at: layout() keeps it.
-    struct Tool {
-        Fl_Widget* widget;
-        const char* id;  // names it in the ready file
-        int gap, label_w, w, h;  // space before it, then its label (drawn to its left), then the widget
-    };
-    std::vector<Tool> tools_;
     ImageView* view_ = nullptr;
-    MessagesView* messages_ = nullptr;
-    Fl_Text_Buffer *message_text_ = nullptr, *message_styles_ = nullptr;
-    Fl_Box *scene_box_ = nullptr, *progress_box_ = nullptr, *message_box_ = nullptr, *pixel_box_ = nullptr;
-    bool show_messages_ = false;
+    std::unique_ptr<SettingsBar> settings_;
+    std::unique_ptr<MessagesPanel> messages_;
+    std::unique_ptr<StatusBar> status_;
+    std::unique_ptr<PixelInspection> inspection_;
+    std::unique_ptr<WatchTimer> watch_;
+    std::unique_ptr<ScriptedReport> report_;
 
     std::string scene_;
-    std::string watched_stamp_;
-    int watch_ticks_ = 0;  // times the watch timer has fired (and, with --watch, checked the file)
     std::uint64_t image_version_ = 0;
-    std::uint64_t shown_diagnostics_job_ = ~0ull, asked_textures_job_ = 0, first_job_ = 0, ended_job_ = 0;
+    std::uint64_t asked_textures_job_ = 0;
     int area_w_ = 0, area_h_ = 0;  // the image area's size at the last layout
-    std::vector<std::string> diagnostic_lines_, message_lines_;  // of the last load; in the panel now
     RenderStatus shown_;  // the status the window was last brought up to date with (poll)
-    bool done_handled_ = false;
-    bool ready_written_ = false;
     bool quitting_ = false;
     std::string extra_message_;  // a message of the viewer's own (e.g. a failed save)
-    int exit_code_ = 0;
-    std::unique_ptr<InspectorWindow> inspector_;  // [inspector] made on first use
-
-    // The camera on screen: none = the file's. The file's camera as written (of the last load that
-    // got that far), and the camera when the current drag began.
-    std::optional<CameraDesc> camera_;
-    std::optional<CameraDesc> file_camera_;
-    CameraDesc drag_start_;
-    bool in_drag_ = false;
-    std::string pixel_text_;  // the readout of the pixel under the pointer
-    std::vector<std::string> recent_;  // most recent first
-
-    // Remembered for the session: texture name as written → file the user picked; scenes for
-    // which the user declined to pick (rendered with the checkerboard from then on).
-    // Per scene file: the files the user picked for missing textures, and the textures they
-    // declined to look for (checkerboards); remembered for the session.
-    std::map<std::string, std::map<std::string, std::string>> texture_overrides_;
-    std::map<std::string, std::set<std::string>> declined_textures_;
 };
 
 // Set by SIGINT/SIGTERM; the window quits cleanly at its next poll.

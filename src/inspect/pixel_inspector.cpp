@@ -1,5 +1,6 @@
 #include "inspect/pixel_inspector.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "film/film.h"
@@ -56,6 +57,102 @@ SecondaryInfo describe_secondary(const Scene& scene, const ShadingRecorder& rec,
     if (r.node >= 0) info.next = describe_hit(scene, rec.nodes[std::size_t(r.node)]);
     return info;
 }
+
+// The detail sample's ray tree (ray_tree.h) from its shading record: the camera ray, then below
+// each hit its shadow rays (toward the lights it faces) and the reflected and refracted rays that
+// were traced, depth first.
+class TreeBuilder {
+public:
+    TreeBuilder(const Scene& scene, const ShadingRecorder& rec, RayTree& tree) : scene_(scene), rec_(rec), tree_(tree) {}
+
+    void build(const Ray& camera_ray) {
+        // A far point for a ray that leaves the scene: twice as far from the camera as anything recorded.
+        for (const ShadeNode& n : rec_.nodes) reach_ = std::max(reach_, glm::length(n.surface.point - camera_ray.origin));
+        for (const Light& l : scene_.data.lights)
+            if (l.type != LightType::Directional) reach_ = std::max(reach_, glm::length(l.position - camera_ray.origin));
+        reach_ *= 2.0f;
+        RaySegment cam;
+        cam.kind = RayKind::Camera;
+        cam.from = camera_ray.origin;
+        if (rec_.nodes.empty()) {
+            cam.escaped = true;
+            cam.to = camera_ray.origin + reach_ * glm::normalize(camera_ray.direction);
+            tree_.segments.push_back(cam);
+            return;
+        }
+        end_at(cam, 0);
+        tree_.segments.push_back(cam);
+        below(0, 0);
+    }
+
+private:
+    void end_at(RaySegment& s, int node) {
+        const ShadeNode& n = rec_.nodes[std::size_t(node)];
+        s.to = n.surface.point;
+        s.hit = true;
+        const ObjectInfo o = describe_object(scene_, n.hit.instance);
+        s.shape = o.kind;
+        s.object = o.loc;
+    }
+
+    void below(int node, int segment) {
+        const ShadeNode& n = rec_.nodes[std::size_t(node)];
+        for (const LightTerm& t : n.lights) {
+            if (!t.faces) continue;  // no shadow ray was traced
+            RaySegment s;
+            s.kind = RayKind::Shadow;
+            s.depth = n.depth;
+            s.parent = segment;
+            s.from = n.surface.point;
+            s.light = t.light;
+            const bool far = std::isinf(t.sample.distance);
+            s.to = far ? n.surface.point + reach_ * t.sample.to_light : t.sample.position;
+            s.escaped = far;
+            if (t.shadow == glm::vec3(0.0f)) {
+                s.shadow = ShadowState::Blocked;
+                // Up to the first opaque thing on the way (what stops the light).
+                const std::vector<Blocker> blockers = blockers_toward(scene_, n, t);
+                if (!blockers.empty() && !blockers.back().transparent) {
+                    const glm::vec3 start = n.surface.point + surface_offset(n.surface.point) * n.facing_normal;
+                    s.to = start + blockers.back().t * t.sample.to_light;
+                    s.hit = true;
+                    s.escaped = false;
+                    s.shape = blockers.back().object.kind;
+                    s.object = blockers.back().object.loc;
+                }
+            } else if (t.shadow != glm::vec3(1.0f)) {
+                s.shadow = ShadowState::Tinted;
+                s.tint = t.shadow;
+            }
+            tree_.segments.push_back(s);
+        }
+        for (const SecondaryRecord* r : {&n.reflect, &n.refract}) {
+            if (r->outcome != SecondaryRecord::Outcome::Traced) continue;
+            RaySegment s;
+            const bool reflected = r == &n.reflect;
+            s.kind = reflected ? RayKind::Reflected : RayKind::Refracted;
+            s.depth = n.depth + 1;
+            s.parent = segment;
+            s.from = r->ray.origin;
+            s.total_internal_reflection = reflected && n.total_internal_reflection;
+            s.inside = reflected ? !n.outside : n.outside;  // a refracted ray crosses the surface
+            if (r->node < 0) {
+                s.escaped = true;
+                s.to = r->ray.origin + reach_ * glm::normalize(r->ray.direction);
+                tree_.segments.push_back(s);
+                continue;
+            }
+            end_at(s, r->node);
+            tree_.segments.push_back(s);
+            below(r->node, int(tree_.segments.size()) - 1);
+        }
+    }
+
+    const Scene& scene_;
+    const ShadingRecorder& rec_;
+    RayTree& tree_;
+    float reach_ = 1.0f;
+};
 
 glm::vec3 clamped(const glm::vec3& c) { return {clamp01(c.x), clamp01(c.y), clamp01(c.z)}; }
 
@@ -193,6 +290,11 @@ PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y
                      : std::string(render_mode_name(job.integrator.mode)) +
                            " mode: a debugging view, its colour is not lighting and is not split into parts";
     }
+
+    r.ray_tree.camera = camera;
+    r.ray_tree.width = job.width;
+    r.ray_tree.height = job.height;
+    TreeBuilder(scene, detail, r.ray_tree).build(r.camera_ray);
 
     if (detail.nodes.empty()) return r;  // the background
     const ShadeNode& node = detail.nodes[0];

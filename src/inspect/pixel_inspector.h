@@ -18,6 +18,7 @@
 
 #include "accel/scene.h"
 #include "data/provenance.h"
+#include "inspect/ray_tree.h"
 #include "integrator/shading_record.h"
 #include "render/render_job.h"
 
@@ -102,6 +103,7 @@ struct PixelReport {
     std::vector<LightInfo> lights;
     bool total_internal_reflection = false, depth_limit = false;
     SecondaryInfo reflected, refracted;
+    RayTree ray_tree;  // the detail sample's rays, every bounce, in world space (ray_tree.h)
 };
 
 // What the inspector needs to know about the render: the job the image was rendered with (its

@@ -106,8 +106,22 @@ std::string display_loc(const SourceLoc& loc, const std::string& base_dir) {
     return display_path(loc.file, base_dir) + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.col);
 }
 
+namespace {
+
+void write_report(std::ostream& out, const PixelReport& r, const std::string& base);
+
+}  // namespace
+
 std::string report_text(const PixelReport& r, const std::string& base) {
     std::ostringstream out;
+    write_report(out, r, base);
+    out << ray_tree_text(r.ray_tree, base);
+    return out.str();
+}
+
+namespace {
+
+void write_report(std::ostream& out, const PixelReport& r, const std::string& base) {
     out << "pixel " << r.x << "," << r.y << " of " << r.width << "x" << r.height << ": " << render_mode_name(r.mode)
         << " mode, max depth " << r.max_depth << ", " << r.samples << (r.samples == 1 ? " sample" : " samples")
         << " (aa " << r.sampling.aa << ", spp " << r.sampling.spp
@@ -133,7 +147,7 @@ std::string report_text(const PixelReport& r, const std::string& base) {
     out << "camera ray: from " << paren(r.camera_ray.origin) << " direction " << paren(r.camera_ray.direction) << "\n";
     if (!r.hit) {
         out << "background: the camera ray hits nothing; the background colour is " << paren(r.background) << "\n";
-        return out.str();
+        return;
     }
     const HitInfo& h = *r.hit;
     out << "object: " << object_text(h.object, base) << "\n";
@@ -159,7 +173,8 @@ std::string report_text(const PixelReport& r, const std::string& base) {
         out << "total internal reflection: the transparent weight goes to the reflected ray\n";
     write_secondary(out, "reflected ray", r.reflected, r, base);
     write_secondary(out, "refracted ray", r.refracted, r, base);
-    return out.str();
 }
+
+}  // namespace
 
 }  // namespace whitted

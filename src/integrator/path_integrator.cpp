@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "accel/instance_geometry.h"
 #include "integrator/bsdf.h"
@@ -171,6 +172,18 @@ std::vector<Diagnostic> path_mode_warnings(const SceneData& scene, const std::ve
                                std::to_string(1.0f / s) + "); the four are scaled down by that, so that no surface "
                                "creates light"});
     }
+    // In the order of the file (the materials come in the order the instances were drawn), once per
+    // place: files in the order they first appear, then line and column.
+    std::vector<std::string> files;
+    auto rank = [&](const std::string& f) {
+        return std::size_t(std::find(files.begin(), files.end(), f) - files.begin());
+    };
+    for (const Diagnostic& d : out)
+        if (rank(d.loc.file) == files.size()) files.push_back(d.loc.file);
+    auto key = [&](const Diagnostic& d) { return std::make_tuple(rank(d.loc.file), d.loc.line, d.loc.col); };
+    std::stable_sort(out.begin(), out.end(), [&](const Diagnostic& a, const Diagnostic& b) { return key(a) < key(b); });
+    out.erase(std::unique(out.begin(), out.end(), [&](const Diagnostic& a, const Diagnostic& b) { return key(a) == key(b); }),
+              out.end());
     return out;
 }
 

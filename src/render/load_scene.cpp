@@ -64,6 +64,7 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     std::vector<SourceLoc> sources;
     for (const ObjectDesc* o : flat.material_sources) sources.push_back(o->loc);
     result.path_warnings = path_mode_warnings(flat.scene, sources);
+    result.stats.effects = sampled_effects(flat.scene, parsed.scene.camera);
 
     t = Clock::now();
     result.stats.objects = flat.scene.instances.size();

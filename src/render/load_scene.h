@@ -7,6 +7,7 @@
 
 #include "cs1230/stage.h"
 #include "parse/parser.h"
+#include "render/sampled_effects.h"
 #include "texture/texture_loader.h"
 
 namespace whitted {
@@ -37,6 +38,7 @@ struct LoadStats {
     double parse_seconds = 0, flatten_seconds = 0, texture_seconds = 0, build_seconds = 0;
     std::size_t objects = 0, lights = 0, textures = 0;
     Dialect dialect = Dialect::Labs;  // which family of files the scene is written in (§9.4)
+    SampledEffects effects;           // §9.1 effects, which one sample per pixel does not show
 };
 
 struct LoadResult {

@@ -1,13 +1,17 @@
 // `whitted SCENE --inspect X,Y`: the report as a user reads it, checked against the scene's text
 // and against the image the same settings render.
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include <gtest/gtest.h>
 
 #include "film/image_io.h"
 #include "inspect/inspect_scene.h"
+#include "inspect/ray_tree_scene.h"
 #include "support/run_process.h"
 
 namespace whitted {
@@ -131,6 +135,63 @@ TEST(CliInspect, BadSceneIsStillAnError) {
     const auto r = test::run_process({test::cli_path(), scene, "--inspect", "1,1"});
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_TRUE(has(r.output, "bad.sc:1:")) << r.output;
+}
+
+// --ray-tree FILE.obj / FILE.json and --json: the pixel's ray tree, as the mirror-and-glass scene's
+// is known by hand (tests/inspect/ray_tree_scene.h): seven segments, the reflected one from the mirror
+// point to the glass.
+TEST(CliInspect, ExportsTheRayTreeAsObjAndJson) {
+    const std::string dir = test::make_temp_dir();
+    const std::string scene = test::write_file(dir, "tree.sc", test::kRayTreeScene);
+    const std::vector<std::string> base{test::cli_path(), scene, "--width", std::to_string(test::kRayTreeWidth),
+                                        "--height", std::to_string(test::kRayTreeHeight), "--inspect",
+                                        std::to_string(test::kRayTreeX) + "," + std::to_string(test::kRayTreeY)};
+    auto with = [&](std::vector<std::string> extra) {
+        std::vector<std::string> argv = base;
+        argv.insert(argv.end(), extra.begin(), extra.end());
+        return test::run_process(argv);
+    };
+    const auto obj = with({"--ray-tree", dir + "/tree.obj"});
+    ASSERT_EQ(obj.exit_code, 0) << obj.output;
+    EXPECT_TRUE(has(obj.output, "ray tree of that sample: 7 segments, 3 bounces")) << obj.output;
+    std::ifstream in(dir + "/tree.obj");
+    std::vector<glm::vec3> v;
+    int lines = 0;
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream ls(line);
+        std::string tag;
+        ls >> tag;
+        glm::vec3 p;
+        if (tag == "v" && ls >> p.x >> p.y >> p.z) v.push_back(p);
+        lines += tag == "l";
+    }
+    ASSERT_EQ(lines, 7);
+    ASSERT_EQ(v.size(), 14u);
+    struct stat st{};
+    ASSERT_EQ(stat((dir + "/tree.obj").c_str(), &st), 0);
+    const mode_t mask = umask(0);
+    umask(mask);
+    EXPECT_EQ(st.st_mode & 0777, 0666 & ~mask) << "the mode of any new file";
+    // Segment 2 (the reflected ray): vertices 5 and 6.
+    EXPECT_NEAR(v[4].x, test::kMirrorHit.x, 1e-3f);
+    EXPECT_NEAR(v[4].z, test::kMirrorHit.z, 1e-3f);
+    EXPECT_NEAR(v[5].x, test::kGlassEntry.x, 1e-3f);
+    EXPECT_NEAR(v[5].z, test::kGlassEntry.z, 1e-3f);
+
+    const auto json = with({"--json"});
+    ASSERT_EQ(json.exit_code, 0) << json.output;
+    EXPECT_EQ(json.output.rfind("{\"pixel\":[100,75],\"image\":[201,151],", 0), 0u) << json.output;
+    EXPECT_TRUE(has(json.output, "\"kind\":\"reflected\",\"depth\":1,\"parent\":0,")) << json.output;
+    EXPECT_FALSE(has(json.output, "ray tree of that sample")) << "JSON alone on stdout";
+    const auto json_file = with({"--ray-tree", dir + "/tree.json"});
+    ASSERT_EQ(json_file.exit_code, 0) << json_file.output;
+    std::ifstream jin(dir + "/tree.json");
+    const std::string written{std::istreambuf_iterator<char>(jin), {}};
+    EXPECT_EQ(written, json.output);
+
+    EXPECT_EQ(with({"--ray-tree", dir + "/tree.txt"}).exit_code, 1);
+    EXPECT_EQ(with({"--ray-tree", dir + "/no/such/folder/tree.obj"}).exit_code, 3);
+    EXPECT_EQ(test::run_process({test::cli_path(), scene, "--json"}).exit_code, 1) << "--json without --inspect";
 }
 
 }  // namespace

@@ -94,6 +94,38 @@ TEST(Cli, RefusesToWriteTheImageOverTheSceneFile) {
     }
 }
 
+// `whitted out.png` (an image given as the scene, no -o): the image would be its own output, but
+// the first thing to say is that it is no scene file; the image stays as it was.
+TEST(Cli, AnImageGivenAsTheSceneIsNamedForWhatItIs) {
+    std::string dir = test::make_temp_dir();
+    const std::string image(std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
+    std::string png = write_file(dir, "out.png", image);
+    auto r = run_process({test::cli_path(), png, "-q"});
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find(png + ":1:1: error: this is not a scene file (it looks like a PNG image)"), std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("is the scene file itself"), std::string::npos) << r.output;
+    std::ifstream in(png, std::ios::binary);
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), image);
+}
+
+// A scene with a lens rendered with one sample per pixel shows it sharp (the lens centre): says so.
+TEST(Cli, OneSamplePerPixelOfASceneWithALensSaysSo) {
+    std::string dir = test::make_temp_dir();
+    std::string scene = write_file(dir, "lens.sc",
+                                   "camera [ eye 0 0 5 focus 0 0 0 aperture 0.3 ]\n"
+                                   "light [ position 2 2 4 ]\n"
+                                   "mastersubgraph root [ trans [ object sphere [ diffuse 1 0 0 ] ] ]\n");
+    auto one = run_process({test::cli_path(), scene, "-o", dir + "/one.png", "--width", "16", "--height", "12", "-q"});
+    EXPECT_EQ(one.exit_code, 0) << one.output;
+    EXPECT_NE(one.output.find("whitted: note: this scene has depth of field: raise SPP to see it"), std::string::npos)
+        << one.output;
+    auto more = run_process(
+        {test::cli_path(), scene, "-o", dir + "/more.png", "--width", "16", "--height", "12", "--spp", "4", "-q"});
+    EXPECT_EQ(more.exit_code, 0) << more.output;
+    EXPECT_EQ(more.output.find("raise SPP"), std::string::npos) << more.output;
+}
+
 TEST(Cli, ThousandsOfWarningsAreCountedNotAllPrinted) {
     std::string dir = test::make_temp_dir();
     std::string text = "mastersubgraph root [ trans [ object sphere [ ] ] ]\n";

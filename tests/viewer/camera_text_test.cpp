@@ -39,8 +39,13 @@ void expect_same_camera(const CameraDesc& a, const CameraDesc& b) {
     EXPECT_EQ(ca.up, cb.up);
     EXPECT_EQ(ca.tan_half_fov, cb.tan_half_fov);
     EXPECT_EQ(ca.lens_radius, cb.lens_radius);
-    EXPECT_EQ(ca.focal_distance, cb.focal_distance);
+    if (!ca.is_pinhole()) {
+        EXPECT_EQ(ca.focal_distance, cb.focal_distance);  // a pinhole ray does not use it
+    }
 }
+
+// The numbers of a vector as a block writes them.
+std::string V(glm::vec3 v) { return format_number(v.x) + " " + format_number(v.y) + " " + format_number(v.z); }
 
 CameraDesc odd_camera() {
     CameraDesc c;
@@ -86,7 +91,9 @@ TEST(CameraText, TheBlockReadsBackAsTheSameCamera) {
     expect_same_camera(parsed_camera(lens + "\n" + kRest), c);
 }
 
-TEST(CameraText, OnlyTheCameraBlockIsReplacedWhateverTheSpacingAndComments) {
+// Only the numbers that change are rewritten, and what the block lacks is added before its `]`:
+// its comment, line breaks and tabs stay, and so does every byte around it.
+TEST(CameraText, TheCameraBlockIsEditedInPlaceKeepingItsCommentsAndLayout) {
     const std::string before = "# a scene\n# camera [ eye 9 9 9 ]  (a comment, not a block)\n\tlight[position 1 2 3]\n";
     const std::string old_block = "camera[eye 0 0 5  # the eye\n   focus 0 0 0\tangle 40]";
     const std::string after =
@@ -96,17 +103,43 @@ TEST(CameraText, OnlyTheCameraBlockIsReplacedWhateverTheSpacingAndComments) {
     const CameraReplacement r = replace_camera_block(before + old_block + after, c);
     ASSERT_EQ(r.error, "");
     EXPECT_EQ(r.blocks, 1);
-    EXPECT_EQ(r.text, before + camera_block(c) + after);
+    const std::string block = "camera[eye " + V(c.eye) + "  # the eye\n   focus " + V(c.focus) + "\tangle " +
+                              format_number(c.angle_deg) + " up " + V(c.up) + "]";
+    EXPECT_EQ(r.block, block);
+    EXPECT_EQ(r.text, before + block + after);
+}
+
+TEST(CameraText, NumbersThatHoldAreKeptAsWritten) {
+    const std::string text = std::string("camera [ eye 0 0 5.0   # mine\n focus 0 0 0 ]\n") + kRest;
+    CameraDesc c = parsed_camera(text);
+    c.angle_deg = 30;
+    const CameraReplacement r = replace_camera_block(text, c);
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(r.block, "camera [ eye 0 0 5.0   # mine\n focus 0 0 0 angle 30 ]");
+    EXPECT_EQ(r.text, r.block + "\n" + kRest);
+}
+
+TEST(CameraText, ALookBecomesAFocusWhereItStands) {
+    const std::string text = std::string("camera [ eye 0 1 6 look 0 0 -1 angle 40 ]\n") + kRest;
+    CameraDesc c = parsed_camera(text);
+    c.focus = {0, 0, 0};
+    c.use_focus = true;
+    const CameraReplacement r = replace_camera_block(text, c);
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(r.block, "camera [ eye 0 1 6 focus 0 0 0 angle 40 ]");
+    expect_same_camera(parsed_camera(r.text), c);
 }
 
 TEST(CameraText, ABlockWithoutItsOpeningBracketIsFound) {
     const std::string text = std::string("camera eye 0 0 5 focus 0 0 0 ]\n") + kRest;
-    const CameraReplacement r = replace_camera_block(text, odd_camera());
+    const CameraDesc c = odd_camera();
+    const CameraReplacement r = replace_camera_block(text, c);
     ASSERT_EQ(r.error, "");
-    EXPECT_EQ(r.text, camera_block(odd_camera()) + "\n" + kRest);
+    EXPECT_EQ(r.text, "camera eye " + V(c.eye) + " focus " + V(c.focus) + " up " + V(c.up) + " angle " +
+                          format_number(c.angle_deg) + " ]\n" + kRest);
 }
 
-TEST(CameraText, WithSeveralBlocksTheLastIsReplacedAndTheResultIsTheNewCamera) {
+TEST(CameraText, WithSeveralBlocksTheLastIsEditedToOverrideWhatTheEarlierOnesSet) {
     // §5: blocks merge keyword by keyword, later ones winning; the first sets a lens.
     const std::string first = "camera [ eye 1 1 1 aperture 0.5 focaldistance 3 near-far 1 50 ]\n";
     const std::string middle = std::string("light [ position 0 5 0 ]\n");
@@ -115,9 +148,40 @@ TEST(CameraText, WithSeveralBlocksTheLastIsReplacedAndTheResultIsTheNewCamera) {
     const CameraReplacement r = replace_camera_block(text, c);
     ASSERT_EQ(r.error, "");
     EXPECT_EQ(r.blocks, 2);
-    EXPECT_EQ(r.text.substr(0, first.size() + middle.size()), first + middle);  // the first block kept
-    EXPECT_NE(r.text.find("aperture 0 focaldistance "), std::string::npos)
-        << "the earlier lens must be overridden: " << r.text;
+    // The pinhole must be stated (the first block's lens would stay), its distance in focus need not.
+    const std::string block = "camera [ angle " + format_number(c.angle_deg) + " eye " + V(c.eye) + " focus " +
+                              V(c.focus) + " up " + V(c.up) + " near-far 0.1 1000 aperture 0 ]";
+    EXPECT_EQ(r.block, block);
+    EXPECT_EQ(r.text, first + middle + block + "\n" + kRest);
+    expect_same_camera(parsed_camera(r.text), c);
+}
+
+// Two pinhole blocks: nothing about a lens is added (the block shown is the block written).
+TEST(CameraText, WithSeveralPinholeBlocksNoLensIsStated) {
+    const std::string first = "camera [ eye 1 1 1 up 0 1 0 ]\n";
+    const std::string text = first + "camera [ angle 30 ]\n" + kRest;
+    const CameraDesc c = odd_camera();
+    const CameraReplacement r = replace_camera_block(text, c);
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(r.block, "camera [ angle " + format_number(c.angle_deg) + " eye " + V(c.eye) + " focus " + V(c.focus) +
+                           " up " + V(c.up) + " ]");
+    EXPECT_EQ(r.text, first + r.block + "\n" + kRest);
+    expect_same_camera(parsed_camera(r.text), c);
+}
+
+// A lens: its distance in focus is stated only when the file would give another one.
+TEST(CameraText, ALensStatesItsFocalDistanceOnlyWhereTheFileWouldDiffer) {
+    CameraDesc c = parsed_camera(std::string("camera [ eye 0 0 5 focus 0 0 0 ]\n") + kRest);
+    c.aperture = 0.25f;  // in focus at |focus - eye| = 5, the default distance of this camera
+    const CameraReplacement plain = replace_camera_block(std::string("camera [ eye 0 0 5 focus 0 0 0 ]\n") + kRest, c);
+    ASSERT_EQ(plain.error, "");
+    EXPECT_EQ(plain.block, "camera [ eye 0 0 5 focus 0 0 0 aperture 0.25 ]");
+    expect_same_camera(parsed_camera(plain.text), c);
+
+    const std::string first = "camera [ focaldistance 3 ]\n";  // an earlier block moves the plane in focus
+    const CameraReplacement r = replace_camera_block(first + "camera [ eye 0 0 5 focus 0 0 0 ]\n" + kRest, c);
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(r.block, "camera [ eye 0 0 5 focus 0 0 0 aperture 0.25 focaldistance 5 ]");
     expect_same_camera(parsed_camera(r.text), c);
 }
 
@@ -161,6 +225,32 @@ TEST(CameraText, SavingReplacesTheBlockAtomicallyAndKeepsThePermissions) {
     kept << again.rdbuf();
     EXPECT_EQ(kept.str(), bad);
     EXPECT_NE(save_camera_into_file(dir + "/missing.sc", odd_camera()), "");
+}
+
+// The block the user was asked about is the one written: a file changed after the question is
+// not written over.
+TEST(CameraText, APlannedSaveIsNotWrittenOverAFileChangedSince) {
+    const std::string dir = test::make_temp_dir();
+    const std::string path = dir + "/s.sc";
+    const std::string text = std::string("camera [ eye 0 0 5 ]\n") + kRest;
+    std::ofstream(path) << text;
+    const CameraSave plan = plan_camera_save(path, odd_camera());
+    ASSERT_EQ(plan.error, "");
+    const std::string edited = std::string("camera [ eye 0 0 6 ]\n") + kRest;
+    std::ofstream(path, std::ios::trunc) << edited;
+    EXPECT_NE(commit_camera_save(plan), "");
+    std::ifstream in(path);
+    std::stringstream kept;
+    kept << in.rdbuf();
+    EXPECT_EQ(kept.str(), edited);
+
+    std::ofstream(path, std::ios::trunc) << text;
+    EXPECT_EQ(commit_camera_save(plan), "");
+    std::ifstream again(path);
+    std::stringstream written;
+    written << again.rdbuf();
+    EXPECT_EQ(written.str(), plan.replacement.text);
+    EXPECT_NE(written.str().find(plan.replacement.block), std::string::npos);
 }
 
 }  // namespace

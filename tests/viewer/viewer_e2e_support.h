@@ -213,6 +213,19 @@ struct Ready {
     bool dimmed = false;                             // the image is shown dimmed under an error banner
     std::vector<std::string> recent;                 // File > Open recent, most recent first
     double exposure = 0;                             // of the image view, in stops
+    std::map<std::string, std::string> settings;     // the tool bar's values, by tool
+    std::vector<std::string> banner;                 // the lines over the image area (an error)
+    struct RayLine {
+        std::string kind;
+        int depth = 0;
+        float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    };
+    std::vector<RayLine> rays;                       // the ray tree drawn over the image (root coordinates)
+    struct Mark {
+        std::string shape;
+        float x = 0, y = 0;
+    };
+    std::vector<Mark> marks;                         // its marks: hits, blockers, lights, total internal reflection
 };
 
 inline Ready read_ready(const std::string& path) {
@@ -249,6 +262,16 @@ inline Ready read_ready(const std::string& path) {
             ls >> r.exposure;
         } else if (key == "recent") {
             r.recent.push_back(line.substr(std::min(line.size(), key.size() + 1)));
+        } else if (key == "setting" && ls >> name >> word) {
+            r.settings[name] = word;
+        } else if (key == "ray") {
+            Ready::RayLine l;
+            if (ls >> l.kind >> l.depth >> l.x0 >> l.y0 >> l.x1 >> l.y1) r.rays.push_back(l);
+        } else if (key == "mark") {
+            Ready::Mark m;
+            if (ls >> m.shape >> m.x >> m.y) r.marks.push_back(m);
+        } else if (key == "banner") {
+            r.banner.push_back(line.substr(std::min(line.size(), key.size() + 1)));
         }
     }
     return r;

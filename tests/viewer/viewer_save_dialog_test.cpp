@@ -78,6 +78,40 @@ TEST_F(ViewerE2E, SaveImageAsStartsInTheScenesFolder) {
     EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
 }
 
+// A path typed from the root into the name field is taken as typed (FLTK's chooser moved to each
+// folder as its '/' was typed and garbled the field; Enter then did nothing).
+TEST_F(ViewerE2E, SaveImageAsTakesAnAbsolutePathTypedIntoTheName) {
+    Xvfb x;
+    std::string why;
+    WHITTED_NEEDS(test::kSkipViewerTests, x.start(dir_, why) ? "" : "no X server for the screen test: " + why);
+    WHITTED_NEEDS(test::kSkipViewerTests, missing_tools({"xdotool"}));
+    fs::create_directory(dir_ + "/elsewhere");
+    const std::string ready = dir_ + "/ready.txt", target = dir_ + "/elsewhere/out.png";
+    Child viewer({WHITTED_VIEWER_PATH, scene_, "--width", "160", "--height", "120", "--threads", "2", "--ready-file",
+                  ready},
+                 dir_ + "/viewer.log",
+                 {{"DISPLAY", x.display()}, {"HOME", dir_}, {"ASAN_OPTIONS", asan_options_for_viewer()}});
+    Ready r;
+    ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer.output();
+    const std::string window = xdotool(x.display(), "search --name whitted-view");
+    xdotool(x.display(), "windowfocus --sync " + window + " key ctrl+s");
+    const std::string dialog = xdotool(x.display(), "search --sync --name 'Save image as'");
+    xdotool(x.display(), "windowfocus --sync " + dialog);
+    xdotool(x.display(), "key End shift+Home");
+    xdotool(x.display(), "type --delay 30 " + target);
+    xdotool(x.display(), "key Return");
+    ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready& n) {
+        return n.labels.count("message") && n.labels.at("message").find("saved") != std::string::npos;
+    }, 20s)) << "nothing was saved:\n" << viewer.output();
+    EXPECT_EQ(drawn_text(r.labels["message"]), " saved " + target);
+    Image saved;
+    ASSERT_EQ(read_image(target, saved), "") << viewer.output();
+    EXPECT_EQ(saved.width, 160);
+    viewer.signal(SIGTERM);
+    EXPECT_EQ(viewer.wait_exit(10s), 0) << viewer.output();
+}
+
 // The window goes on showing the render while the Save dialog is open: the
 // ready file, written from the window's own timer when the render ends, appears with the dialog
 // still open. (GTK's chooser ran an event loop of its own, in which no timer of ours fired.)

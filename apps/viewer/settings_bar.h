@@ -1,0 +1,84 @@
+#pragma once
+// The render settings on screen: the tool bar (Render, Stop, width, height, Fit window, depth,
+// mode, AA, SPP, threads) and the Render menu's items for each of them (also those a narrow
+// window hides), with the settings no widget shows (the AA threshold, and the rest of the job the
+// command line gave). The one place where widgets meet RenderJob.
+#include <functional>
+#include <iosfwd>
+#include <vector>
+
+#include "render/render_job.h"
+
+class Fl_Button;
+class Fl_Check_Button;
+class Fl_Choice;
+class Fl_Menu_Bar;
+class Fl_Spinner;
+class Fl_Widget;
+class Fl_Window;
+
+namespace whitted::viewer {
+
+class SettingsBar {
+public:
+    // Makes the tool bar's widgets in the current group (the window's), showing `settings` and `fit`.
+    SettingsBar(const RenderJob& settings, bool fit);
+    ~SettingsBar();
+    SettingsBar(const SettingsBar&) = delete;
+    SettingsBar& operator=(const SettingsBar&) = delete;
+
+    // The Render menu's items for the settings: Width … Threads, then AA threshold.
+    void add_menu_items(Fl_Menu_Bar& menu);
+
+    // The job to render now, in an image area of area_w × area_h (with Fit window on, that is the
+    // image's size, and the width and height fields show it).
+    RenderJob job(int area_w, int area_h);
+    // The settings as the tool bar shows them (what is remembered between runs).
+    RenderJob shown() const;
+    bool fit() const;
+    int threads() const;  // the BVH build uses the render's threads
+
+    // The Stop button is active while a job loads or renders.
+    void set_busy(bool busy);
+    // Every tool at the size it was made at, left to right under the menu bar; those that do not
+    // fit a window `window_w` wide are hidden (they come last, so the ones shown never move).
+    void layout(int window_w);
+    // For the ready file: a line "tool ID X Y W H shown|hidden" per tool, in root coordinates of a
+    // window at (wx, wy), x and w including the tool's label; then "setting ID VALUE" per setting.
+    void describe(std::ostream& out, int wx, int wy) const;
+
+    // Where the keys go when a field is done with them (the image, whose keys are the view's): a
+    // key that is not part of a number (a view key such as + or F), Enter, and the setting being
+    // applied (typing has paused) end the editing of a field.
+    void set_focus_home(Fl_Widget* home) { focus_home_ = home; }
+
+    std::function<void()> on_render;  // the Render button, a new AA threshold: render now
+    std::function<void()> on_stop;    // the Stop button
+    std::function<void()> on_change;  // a tool changed: once the typing or clicking has paused
+
+private:
+    static void changed_cb(Fl_Widget*, void* self);
+    static void settled_cb(void* self);
+    void changed();
+    void ask_aa_threshold();
+    bool editing() const;  // the keyboard focus is in one of the spinners
+    static int dispatch(int event, Fl_Window* window);
+
+    RenderJob base_;  // what the tools do not show comes from here
+    Fl_Button *render_ = nullptr, *stop_ = nullptr;
+    Fl_Spinner *width_ = nullptr, *height_ = nullptr, *depth_ = nullptr, *aa_ = nullptr, *spp_ = nullptr,
+               *threads_ = nullptr;
+    Fl_Check_Button* fit_ = nullptr;
+    Fl_Choice* mode_ = nullptr;
+    // The tools, left to right, with the size each was made at: layout() keeps it.
+    struct Tool {
+        Fl_Widget* widget;
+        const char* id;          // names it in the ready file
+        int gap, label_w, w, h;  // space before it, then its label (drawn to its left), then the widget
+    };
+    std::vector<Tool> tools_;
+    Fl_Widget* focus_home_ = nullptr;
+    static SettingsBar* active_;  // the one whose keys dispatch() looks at
+};
+
+}  // namespace whitted::viewer
