@@ -26,10 +26,14 @@ cmake --build "$build" -j"$(nproc)" --target "${targets[@]}"
 
 # Seeds: every scene of scenes/ and of the wild corpus for the scene targets, every image for the
 # texture target (copied flat, so that libFuzzer reads nothing else from those folders).
+# Meshes: every OBJ file of both (and fuzz/obj_seeds/) for the OBJ target; scenes with a mesh after
+# their mark (fuzz/mesh_scene_seeds/, see load_render_fuzzer.cpp) for the scene targets.
 seeds="$build/seeds"
-rm -rf "$seeds" && mkdir -p "$seeds/scenes" "$seeds/images"
-find "$root/scenes" "$shared/scenes/wild" -type f -iname '*.sc' 2>/dev/null |
+rm -rf "$seeds" && mkdir -p "$seeds/scenes" "$seeds/images" "$seeds/objs"
+find "$root/scenes" "$shared/scenes/wild" "$root/fuzz/mesh_scene_seeds" -type f -iname '*.sc' 2>/dev/null |
     while read -r f; do cp "$f" "$seeds/scenes/$(echo "$f" | md5sum | cut -c1-12).sc"; done
+find "$root/scenes" "$shared/scenes" "$root/fuzz/obj_seeds" -type f -iname '*.obj' 2>/dev/null |
+    while read -r f; do cp "$f" "$seeds/objs/$(echo "$f" | md5sum | cut -c1-12).obj"; done
 find "$root/scenes" "$shared/scenes/wild" -type f -size -400k \
     \( -iname '*.png' -o -iname '*.bmp' -o -iname '*.ppm' -o -iname '*.jpg' -o -iname '*.tga' \) 2>/dev/null |
     while read -r f; do cp "$f" "$seeds/images/$(echo "$f" | md5sum | cut -c1-12)"; done
@@ -41,6 +45,7 @@ for t in "${targets[@]}"; do
     mkdir -p "$corpus"
     case "$t" in
         texture_fuzzer) seed="$seeds/images" max_len=400000 dict=() ;;
+        obj_fuzzer) seed="$seeds/objs" max_len=65536 dict=(-dict="$root/fuzz/obj.dict") ;;
         *) seed="$seeds/scenes" max_len=65536 dict=(-dict="$root/fuzz/scene.dict") ;;
     esac
     echo "== $t: ${seconds}s"

@@ -14,6 +14,7 @@
 #include "render/load_scene.h"
 #include "render/renderer.h"
 #include "render_options.h"
+#include "run_limits.h"
 
 namespace {
 
@@ -56,7 +57,15 @@ int run(int argc, char** argv) {
     if (int code = report_load(loaded, o, "whitted", deadline.timed_out()); code != kExitOk) return code;
 
     RenderJob job = render_job(o, &interrupt_flag());
-    if (pixel) return print_inspection(*loaded.scene, job, *pixel, o.scene_path);
+    if (pixel) {
+        const int code = print_inspection(*loaded.scene, job, *pixel, o.scene_path);
+        if (code != kExitInterrupted) return code;
+        if (deadline.timed_out())
+            std::cerr << "whitted: error: the time limit of " << o.timeout << " s (--timeout) ran out while inspecting\n";
+        else
+            std::cerr << "whitted: interrupted while inspecting\n";
+        return deadline.timed_out() ? kExitTimeout : kExitInterrupted;
+    }
     ProgressLine progress(job.tile_count(), !o.quiet && isatty(STDERR_FILENO));
     job.on_tile = [&](const Tile&) { progress.tile_done(); };
 
@@ -66,7 +75,17 @@ int run(int argc, char** argv) {
     progress.finish();
 
     // An interrupted render never replaces the output: a good image from an earlier run may be
-    // there (a batch timeout's SIGTERM must not destroy it). Its part goes beside it.
+    // there (a batch timeout's SIGTERM must not destroy it). Its part goes beside it, if there is
+    // one and it can be written quickly.
+    if (const std::string why = rs.cancelled ? why_no_partial_image(rs.tiles_done, o.width, o.height) : "";
+        !why.empty()) {
+        if (deadline.timed_out())
+            std::cerr << "whitted: error: the time limit of " << o.timeout << " s (--timeout) ran out: " << why
+                      << ": nothing written\n";
+        else
+            std::cerr << "whitted: interrupted: " << why << ": nothing written\n";
+        return deadline.timed_out() ? kExitTimeout : kExitInterrupted;
+    }
     const std::string written = rs.cancelled ? partial_image_path(o.output) : o.output;
     // .exr and .pfm keep the linear values; the 8-bit formats get them clamped (§7).
     const std::string err = is_linear_output(written) ? write_linear_image(film.to_linear(), written)

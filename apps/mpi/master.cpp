@@ -11,6 +11,7 @@
 #include "checkpoint.h"
 #include "film/image_io.h"
 #include "progress.h"
+#include "run_limits.h"
 #include "protocol.h"
 #include "ranks.h"
 #include "schedule.h"
@@ -161,6 +162,13 @@ struct Master {
 
     bool all_bye() const { return std::find(bye.begin(), bye.end(), false) == bye.end(); }
 
+    std::string why_stopped() const {
+        if (!s.deadline || !s.deadline->timed_out()) return "interrupted";
+        char limit[32];
+        std::snprintf(limit, sizeof limit, "%g s", s.options->timeout);
+        return std::string("the time limit of ") + limit + " (--timeout) ran out";
+    }
+
     int run();
     void print_stats(double wall, double local_busy) const;
 };
@@ -223,19 +231,26 @@ int Master::run() {
     checkpoint.flush(true);
 
     int code = cli::kExitOk;
-    // An interrupted job never replaces the output (a good image may be there): its part goes beside it.
+    // An interrupted job never replaces the output (a good image may be there): its part goes beside
+    // it, if there is one and it can be written quickly.
     const std::string written = schedule.all_done() ? s.options->output : partial_image_path(s.options->output);
+    const std::string no_partial =
+        schedule.all_done() ? "" : cli::why_no_partial_image(schedule.done_count(), s.grid.width, s.grid.height);
     if (!mismatch.empty()) {
         std::cerr << "whitted-mpi: error: " << mismatch << "; nothing written\n";
         code = kExitMismatch;
+    } else if (!no_partial.empty()) {
+        std::cerr << "whitted-mpi: " << why_stopped() << ": " << no_partial << ": nothing written\n";
+        code = cli::kExitInterrupted;
     } else if (std::string err = is_linear_output(written) ? write_linear_image(film.to_linear(), written)
                                                            : write_image(film.to_image(), written);
                !err.empty()) {
         std::cerr << "whitted-mpi: error: " << err << "\n";
         code = cli::kExitIo;
     } else if (!schedule.all_done()) {
-        std::cerr << "whitted-mpi: interrupted: wrote the " << schedule.done_count() << " of " << schedule.tile_count()
-                  << " tiles rendered so far to " << written << " (" << s.options->output << " was not written)\n";
+        std::cerr << "whitted-mpi: " << why_stopped() << ": wrote the " << schedule.done_count() << " of "
+                  << schedule.tile_count() << " tiles rendered so far to " << written << " (" << s.options->output
+                  << " was not written)\n";
         code = cli::kExitInterrupted;
     } else if (!s.options->quiet) {
         std::cerr << "wrote " << s.options->output << "\n";
@@ -278,7 +293,7 @@ int run_master(const RankSetup& s) {
     Film film(s.grid.width, s.grid.height);
     std::vector<bool> done;
     if (!s.resume.empty()) {
-        if (std::string err = read_checkpoint(s.resume, {s.job_hash, s.grid}, film, done); !err.empty()) {
+        if (std::string err = read_checkpoint(s.resume, {s.job_hash, s.grid}, film, done, s.interrupted); !err.empty()) {
             std::cerr << "whitted-mpi: error: " << err << "\n";
             const std::int32_t c = cli::kExitUsage;
             // Workers are waiting for work: tell them the job is over.

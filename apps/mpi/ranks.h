@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "interrupt.h"
 #include "render_options.h"
 #include "tiles.h"
 
@@ -20,6 +21,7 @@ struct RankSetup {
     int rank = 0, ranks = 1, threads = 1;
     TestKnobs knobs;
     const std::atomic<bool>* interrupted = nullptr;
+    const cli::Deadline* deadline = nullptr;  // --timeout (60 s under --untrusted): sets `interrupted`
     // Rank 0 only:
     const cli::RenderOptions* options = nullptr;
     std::uint64_t job_hash = 0;  // for the checkpoint

@@ -8,9 +8,10 @@
 #include <charconv>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <vector>
+
+#include "base/file_replace.h"
+#include "base/read_file.h"
 
 namespace whitted::viewer {
 namespace {
@@ -130,43 +131,63 @@ CameraReplacement replace_camera_block(std::string_view text, const CameraDesc& 
     return r;
 }
 
+namespace {
+
+// Writes all of `text` to `fd`; false (errno set) if it could not.
+bool write_all(int fd, const std::string& text) {
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        done += std::size_t(n);
+    }
+    return true;
+}
+
+}  // namespace
+
 std::string save_camera_into_file(const std::string& path, const CameraDesc& camera) {
     namespace fs = std::filesystem;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return "cannot read '" + path + "': " + std::strerror(errno);
-    std::ostringstream buf;
-    buf << in.rdbuf();
-    if (in.bad()) return "cannot read '" + path + "'";
-    const CameraReplacement r = replace_camera_block(buf.str(), camera);
+    const FileContents file = read_regular_file(path, std::size_t(256) << 20);
+    if (!file.ok()) return "cannot read '" + path + "': " + file.error;
+    const CameraReplacement r = replace_camera_block(file.bytes, camera);
     if (!r.error.empty()) return path + ": " + r.error;
 
-    struct stat st{};
-    const bool have_mode = ::stat(path.c_str(), &st) == 0;
-    const fs::path target(path);
+    // The file a link leads to is the scene (the link stays); the new text keeps its permissions.
+    const ReplaceTarget target = replace_target(path);
+    const fs::path real(target.path);
     // A hidden file in the same folder (so the rename stays on one file system).
-    std::string name = target.filename().string();
+    std::string name = real.filename().string();
     name.insert(name.begin(), '.');
     name.append(".camera-XXXXXX");
-    std::string tmp = (target.parent_path() / name).string();
+    std::string tmp = (real.parent_path() / name).string();
     const int fd = ::mkstemp(tmp.data());
-    if (fd < 0) return "cannot write a temporary file next to '" + path + "': " + std::strerror(errno);
-    std::size_t done = 0;
-    bool ok = true;
-    while (ok && done < r.text.size()) {
-        const ssize_t n = ::write(fd, r.text.data() + done, r.text.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        ok = n > 0;
-        if (ok) done += std::size_t(n);
-    }
-    const int write_errno = errno;
-    if (ok && have_mode) ::fchmod(fd, st.st_mode & 07777);
-    ok = ok && ::fsync(fd) == 0;
+    if (fd < 0) return "cannot write a temporary file next to '" + target.path + "': " + std::strerror(errno);
+    keep_permissions(fd, target);
+    bool ok = write_all(fd, r.text) && ::fsync(fd) == 0;
+    int error = errno;
     ok = (::close(fd) == 0) && ok;
-    if (!ok || ::rename(tmp.c_str(), path.c_str()) != 0) {
-        const int e = ok ? errno : write_errno;
+    if (!ok) {
         ::unlink(tmp.c_str());
-        return "cannot write '" + path + "': " + std::strerror(e);
+        return "cannot write '" + path + "': " + std::strerror(error);
     }
+    if (target.links <= 1) {
+        if (::rename(tmp.c_str(), target.path.c_str()) != 0) {
+            error = errno;
+            ::unlink(tmp.c_str());
+            return "cannot write '" + path + "': " + std::strerror(error);
+        }
+        return "";
+    }
+    // Hard links: a rename would leave the other names the old scene. The file itself is rewritten,
+    // now that the new text is safe beside it (kept there if this fails half-way).
+    const int out = ::open(target.path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    ok = out >= 0 && write_all(out, r.text) && ::fsync(out) == 0;
+    error = errno;
+    if (out >= 0) ok = (::close(out) == 0) && ok;
+    if (!ok) return "cannot write '" + path + "': " + std::strerror(error) + " (the new text is in '" + tmp + "')";
+    ::unlink(tmp.c_str());
     return "";
 }
 

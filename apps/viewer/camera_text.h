@@ -34,8 +34,11 @@ struct CameraReplacement {
 CameraReplacement replace_camera_block(std::string_view text, const CameraDesc& camera);
 
 // Replaces the camera block of the scene file at `path`, atomically: the new text goes to a
-// temporary file in the same folder, which is renamed over the old one (keeping its permissions).
-// Returns "" or an error message; on error the file is untouched.
+// temporary file in the same folder, which is renamed over the old one (keeping its permissions,
+// owner and group where allowed). Through a symbolic link, the file it leads to is replaced (the
+// link stays); a file with several hard links is rewritten in place once the new text is safe in
+// the temporary file, so that every name sees it. Returns "" or an error message; on error the
+// file is untouched (in place: the message names the temporary file holding the new text).
 std::string save_camera_into_file(const std::string& path, const CameraDesc& camera);
 
 }  // namespace whitted::viewer

@@ -65,7 +65,6 @@ FilmPixel render_pixel(const Integrator& integrator, RenderJob job, int x, int y
     job.sample_begin = 0;
     job.sample_end = -1;
     job.threads = 1;
-    job.cancel = nullptr;
     job.on_tile = nullptr;
     Film film(job.width, job.height, *job.region);
     render(integrator, job, film);
@@ -139,7 +138,9 @@ PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y
 
     const Camera camera = job.camera_for(scene);
     const auto integrator = make_integrator(scene, camera, job.integrator);
+    auto cancelled = [&] { return r.cancelled = job.cancel && job.cancel->load(std::memory_order_relaxed); };
     const FilmPixel pixel = render_pixel(*integrator, job, x, y);
+    if (cancelled()) return r;
     r.value = pixel.value();
     r.bytes = {to_byte(r.value.x), to_byte(r.value.y), to_byte(r.value.z)};
     r.samples = int(pixel.weight);
@@ -159,6 +160,7 @@ PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y
     float best = Scene::kInfinity;
     ShadingRecorder detail;
     for (int i = 0; i < n; ++i) {
+        if (cancelled()) return r;
         const SampleKey key{std::uint32_t(x), std::uint32_t(y), std::uint32_t(i)};
         const Ray ray = camera_sample_ray(camera, sampler, job.width, job.height, x, y, key.index);
         ShadingRecorder rec;

@@ -81,6 +81,7 @@ struct PixelReport {
     int max_depth = 0;
     SamplingSettings sampling;
     int samples = 0;  // the samples the film averaged for this pixel (adaptive: 1 or all)
+    bool cancelled = false;  // the job's cancel flag was set: the report is incomplete, not to be shown
 
     glm::vec3 value{0.0f};  // the film's value of the pixel (linear; the mean of its samples)
     glm::u8vec3 bytes{0};   // its 8-bit value
@@ -106,7 +107,7 @@ struct PixelReport {
 
 // What the inspector needs to know about the render: the job the image was rendered with (its
 // size, camera, mode and depth, sampling). Its region, sample range, threads and callbacks are
-// ignored: the whole pixel is inspected.
+// ignored: the whole pixel is inspected. Its cancel flag is looked at every sample.
 // Pixel (x, y): column x, row y, row 0 at the top; it must lie inside the job's image.
 PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y);
 

@@ -74,7 +74,7 @@ TEST(CliHostile, AnInterruptedRenderNeverReplacesTheImage) {
         write_file(dir, "good.png", "a good image from yesterday");
         fs::remove(partial);
         auto r = run_process({test::cli_path(), scene, "-o", out, "--width", "2000", "--height", "2000",
-                              "--max-depth", "12", "-q"},
+                              "--max-depth", "1", "-q"},
                              std::vector<TimedSignal>{{400, sig}, {60000, SIGKILL}});
         EXPECT_EQ(r.exit_code, 130) << r.output;
         EXPECT_EQ(read_all(out), "a good image from yesterday");
@@ -94,7 +94,7 @@ TEST(CliHostile, ASecondSignalInTheWriteLeavesNoTemporaryFile) {
     for (int gap : {0, 40, 120, 300}) {
         SCOPED_TRACE(gap);
         auto r = run_process({test::cli_path(), scene, "-o", dir + "/big.ppm", "--width", "4000", "--height", "4000",
-                              "--max-depth", "12", "-q"},
+                              "--max-depth", "1", "-q"},
                              std::vector<TimedSignal>{{300, SIGHUP}, {300 + gap, SIGHUP}, {60000, SIGKILL}});
         EXPECT_EQ(r.exit_code, 130) << r.output;
         EXPECT_FALSE(fs::exists(dir + "/big.ppm"));
@@ -118,7 +118,7 @@ TEST(CliHostile, AnOutputNameOf255BytesWorks) {
     EXPECT_EQ(partial_image_path(dir + "/" + name), dir + "/" + std::string(243, 'n') + ".partial.png");
     const std::string heavy = write_file(dir, "heavy.sc", test::heavy_scene());
     r = run_process({test::cli_path(), heavy, "-o", dir + "/" + name, "--width", "2000", "--height", "2000",
-                     "--max-depth", "12", "-q"},
+                     "--max-depth", "1", "-q"},
                     std::vector<TimedSignal>{{400, SIGTERM}, {60000, SIGKILL}});
     EXPECT_EQ(r.exit_code, 130) << r.output;
     EXPECT_EQ(read_image(dir + "/" + std::string(243, 'n') + ".partial.png", img), "") << r.output;
@@ -185,6 +185,20 @@ TEST(CliHostile, TheProgressLineFitsANarrowTerminal) {
         }
         EXPECT_GE(draws, 1) << r.output;
     }
+}
+
+// Issue 31, finding 9: under a file size limit (`ulimit -f`) the write died of SIGXFSZ and left its
+// temporary file. The signal is ignored: the write fails with "File too large" and is cleaned up.
+TEST(CliHostile, AFileSizeLimitFailsTheWriteCleanly) {
+    const std::string dir = test::make_temp_dir();
+    const std::string scene = write_file(dir, "s.sc", test::kSimpleScene);
+    // 100 KiB allowed, 120,015 bytes of PPM to write.
+    auto r = run_process({"/bin/sh", "-c", "ulimit -f 100; exec \"$0\" \"$@\"", test::cli_path(), scene, "-o",
+                          dir + "/big.ppm", "--width", "200", "--height", "200", "-q"});
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_NE(r.output.find("cannot write '" + dir + "/big.ppm': File too large"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir + "/big.ppm"));
+    expect_no_temporary_files(dir);
 }
 
 }  // namespace

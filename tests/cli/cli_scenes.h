@@ -9,7 +9,8 @@ light [ position 2 2 5 color 1 1 1 ]
 mastersubgraph root [ trans [ object sphere [ diffuse 1 0 0 ] ] ]
 )";
 
-// Many mirrors: seconds of work at a big size and depth 12, so an interrupt lands mid-render.
+// Many mirrors: seconds of work at a big size, so an interrupt lands mid-render (at depth 1 a tile
+// takes milliseconds, so that some are done by then: a render with none done writes nothing).
 inline std::string heavy_scene() {
     std::string text = "camera [ eye 0 0 12 focus 0 0 0 ]\nlight [ position 3 3 10 color 1 1 1 ]\nmastersubgraph root [\n";
     for (int i = 0; i < 400; ++i)

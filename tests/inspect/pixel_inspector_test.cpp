@@ -295,3 +295,27 @@ TEST(PixelInspector, BrownTuftsChainStartsAtTheTopLevelTransBlocks) {
 
 }  // namespace
 }  // namespace whitted
+
+namespace whitted {
+namespace {
+
+// --inspect honours --timeout and Ctrl-C (issue 31, finding 6): it traces every sample of the pixel
+// again, millions with --spp 65536 --aa 16; the job's cancel flag stops it, and the report says it
+// is incomplete instead of showing half an average.
+TEST(PixelInspector, StopsWhenTheJobIsCancelled) {
+    const auto scene = load_inspect_scene();
+    ASSERT_TRUE(scene);
+    RenderJob j = job();
+    j.sampling.aa = Sampler::kMaxAa;
+    j.sampling.spp = Sampler::kMaxSpp;
+    const std::atomic<bool> cancel{true};
+    j.cancel = &cancel;
+    const PixelReport r = inspect_pixel(*scene, j, 3, 3);
+    EXPECT_TRUE(r.cancelled);
+    j.sampling = {};
+    j.cancel = nullptr;
+    EXPECT_FALSE(inspect_pixel(*scene, j, 3, 3).cancelled);
+}
+
+}  // namespace
+}  // namespace whitted
