@@ -39,7 +39,7 @@ std::string why_no_partial_image(int tiles_done, int width, int height) {
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     if (pixels > kMaxPartialImagePixels)
         return "a partial image of " + std::to_string(pixels / 1'000'000) + " megapixels is not written (more than " +
-               std::to_string(kMaxPartialImagePixels / 1'000'000) + ": it could take long to write)";
+               std::to_string(kMaxPartialImagePixels / 1'000'000) + " megapixels take long to write)";
     return "";
 }
 

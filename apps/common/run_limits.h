@@ -33,7 +33,7 @@ struct UntrustedLimits {
 // An interrupted render's part is written beside the output (NAME.partial.EXT) only if a tile of
 // it was rendered and it is at most this many pixels: a bigger one could take longer to convert
 // and encode than an interrupt should wait (a 715-megapixel PNG: tens of seconds).
-constexpr std::size_t kMaxPartialImagePixels = std::size_t(64) << 20;
+constexpr std::size_t kMaxPartialImagePixels = 64'000'000;  // 8000 × 8000
 
 // Why the part of an interrupted width × height render with `tiles_done` tiles is not written
 // ("no tile was rendered", "…megapixels…"), or "" when it is.

@@ -24,7 +24,7 @@ struct MeshBvh;  // accel/mesh_bvh.h
 // `leaf_order`: the instance now at place i was at (*leaf_order)[i] (for side tables that follow
 // the instances).
 // With `cancel` set (by another thread or a signal handler) the build stops within a few nodes and
-// leaves an empty tree (and the instances in their order).
+// leaves an empty tree, the instances in their order and `leaf_order` empty.
 Bvh build_bvh(std::vector<Instance>& instances, int threads = 0, const std::vector<TriangleMesh>* meshes = nullptr,
               std::vector<std::uint32_t>* leaf_order = nullptr, const std::atomic<bool>* cancel = nullptr);
 

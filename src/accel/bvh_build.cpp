@@ -173,13 +173,18 @@ void build_subtree(BigVector<PrimRef>& refs, const Task& root, Nodes& nodes, std
                 const float f = (centre(r) - lo) * scale;
                 return f < float(kBins - 1) ? (f > 0.0f ? static_cast<int>(f) : 0) : kBins - 1;
             };
-            for (std::uint32_t i = task.begin; i < task.end; ++i) {
-                const PrimRef& r = refs[i];
-                Bin& b = bins[bin_of(r)];
-                b.box.grow(r.lo, r.hi);
-                const V4 c = r.lo + r.hi;
-                b.centres.grow(c, c);
-                ++b.count;
+            // (In pieces: the top nodes of a build of millions bin millions each.)
+            constexpr std::uint32_t kPiece = 1u << 18;
+            for (std::uint32_t from = task.begin; from < task.end; from += std::min(kPiece, task.end - from)) {
+                if (from != task.begin && cancel && cancel->load(std::memory_order_relaxed)) return;
+                for (std::uint32_t i = from, to = from + std::min(kPiece, task.end - from); i < to; ++i) {
+                    const PrimRef& r = refs[i];
+                    Bin& b = bins[bin_of(r)];
+                    b.box.grow(r.lo, r.hi);
+                    const V4 c = r.lo + r.hi;
+                    b.centres.grow(c, c);
+                    ++b.count;
+                }
             }
             // Sweep from the right to get the cost of every right side, then from the left.
             std::array<float, kBins> right_cost{};
@@ -370,21 +375,23 @@ BasicBvh<Node> build_wide_bvh(std::size_t n, const std::function<Bounds(std::uin
     if (n == 0) return bvh;
     if (n >= Bvh4Node::kMaxInstances) throw std::length_error("too many primitives for the BVH");
 
-    BigVector<PrimRef> refs(n);
-    parallel_chunks(n, threads, [&](std::uint32_t begin, std::uint32_t end) {
-        for (std::uint32_t i = begin; i < end; ++i) {
-            const Bounds b = box_of(i);
-            float index;
-            std::memcpy(&index, &i, 4);
-            refs[i] = {V4{b.lo.x, b.lo.y, b.lo.z, index}, V4{b.hi.x, b.hi.y, b.hi.z, 0.0f}};
-        }
-    });
     order.resize(n);  // leaf order: the primitive that goes to place i
     auto cancelled = [&] {
         if (!cancel || !cancel->load(std::memory_order_relaxed)) return false;
         for (std::uint32_t i = 0; i < n; ++i) order[i] = i;  // an unfinished tree: nothing of it is kept
         return true;
     };
+    if (cancelled()) return bvh;
+    BigVector<PrimRef> refs(n);
+    parallel_chunks(n, threads, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t i = begin; i < end; ++i) {
+            if (i % 16384 == 0 && cancel && cancel->load(std::memory_order_relaxed)) return;
+            const Bounds b = box_of(i);
+            float index;
+            std::memcpy(&index, &i, 4);
+            refs[i] = {V4{b.lo.x, b.lo.y, b.lo.z, index}, V4{b.hi.x, b.hi.y, b.hi.z, 0.0f}};
+        }
+    });
     if (cancelled()) return bvh;
     BigVector<BinNode> bin = build_binary(refs, threads, costs, cancel);
     if (cancelled()) return bvh;
@@ -430,6 +437,10 @@ Bvh build_bvh(std::vector<Instance>& instances, int threads, const std::vector<T
                                      cancel);
     }
     const std::size_t n = instances.size();
+    if (cancel && cancel->load(std::memory_order_relaxed)) {  // the instances stay as they were
+        if (leaf_order) leaf_order->clear();
+        return Bvh{};
+    }
     if (leaf_order) *leaf_order = source;
     // Reorder the instances to leaf order in place, following the permutation's cycles.
     for (std::uint32_t i = 0; i < n; ++i) {

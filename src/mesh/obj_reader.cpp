@@ -181,7 +181,6 @@ struct CornerKeyHash {
 // What one entry of the corner map costs (a node of three indices and a vertex number, its hash,
 // the allocator's overhead, a bucket).
 constexpr std::size_t kBytesPerCornerEntry = 64;
-constexpr std::size_t kBytesPerVertex = sizeof(glm::vec3) * 2 + sizeof(glm::vec2);
 
 // Triangles with the same three positions in the same order as one kept before: the same triangle
 // to every ray (the same arithmetic gives the same hit, and of equal hits the first is taken), so

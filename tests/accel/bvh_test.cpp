@@ -276,8 +276,7 @@ TEST(Bvh, ACancelledBuildLeavesNothingHalfMade) {
     std::vector<std::uint32_t> order;
     const Bvh bvh = build_bvh(scene.instances, 1, nullptr, &order, &cancel);
     EXPECT_TRUE(bvh.nodes.empty());
-    ASSERT_EQ(order.size(), before.size());
-    for (std::uint32_t i = 0; i < order.size(); ++i) ASSERT_EQ(order[i], i);
+    EXPECT_TRUE(order.empty());
     for (std::size_t i = 0; i < before.size(); ++i)
         ASSERT_EQ(std::memcmp(&scene.instances[i], &before[i], sizeof(Instance)), 0);
     // Not cancelled: the whole tree.

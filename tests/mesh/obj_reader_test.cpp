@@ -137,6 +137,18 @@ TEST(ObjReader, EveryIndexIsCheckedWhateverTheLineEndings) {
     EXPECT_EQ(m.triangles.size(), 1u);
 }
 
+// Found by fuzzing (issue 31, the OBJ target's first minute): tinyobjloader's number parser
+// overflowed an int on the exponent 2147483648 (undefined behaviour; it checks the multiplication,
+// not the addition after it). Built with -fwrapv, that number is a garbage value like any other.
+TEST(ObjReader, ANumberWithAHugeExponentIsJustABadNumber) {
+    TriangleMesh m;
+    const ObjReadResult r = read_obj_text("v 1e2147483648 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
+                                          "v 0 0 0\nv 1 0 0\nv 0 1e-2147483649 1\nf 4 5 6\n",
+                                          "huge.obj", m);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_GE(m.triangles.size(), 1u);
+}
+
 // A file from others may be anything: its words are never quoted in a message (a secret named as
 // a mesh would otherwise be printed a word at a time).
 TEST(ObjReader, MessagesQuoteNothingOfTheFile) {
