@@ -193,46 +193,46 @@ public:
         while (size < 2 * expected) size *= 2;
         slots_.assign(size, kEmpty);
     }
-    // True if `t` (the index of a triangle of `mesh`) repeats an earlier one; else remembers it.
-    bool repeats(const TriangleMesh& mesh, std::uint32_t t) {
+    // True if a triangle of `mesh` has the corners p; else remembers that triangle `next` will.
+    bool repeats(const TriangleMesh& mesh, const glm::vec3* const (&p)[3], std::uint32_t next) {
+        if ((count_ + 1) * 2 > slots_.size()) grow(mesh);  // (before `next` is in the table: not in the mesh yet)
         const std::size_t mask = slots_.size() - 1;
-        for (std::size_t i = hash(mesh, t) & mask;; i = (i + 1) & mask) {
+        for (std::size_t i = hash(p) & mask;; i = (i + 1) & mask) {
             if (slots_[i] == kEmpty) {
-                slots_[i] = t;
-                if (++count_ * 2 > slots_.size()) grow(mesh);
+                slots_[i] = next;
+                ++count_;
                 return false;
             }
-            if (same(mesh, slots_[i], t)) return true;
+            const TriangleIndices& t = mesh.triangles[slots_[i]];
+            if (same(mesh.positions[t[0]], *p[0]) && same(mesh.positions[t[1]], *p[1]) &&
+                same(mesh.positions[t[2]], *p[2]))
+                return true;
         }
     }
     std::size_t bytes() const { return slots_.capacity() * sizeof(std::uint32_t); }
 
 private:
     static constexpr std::uint32_t kEmpty = 0xffffffffu;
-    static std::size_t hash(const TriangleMesh& mesh, std::uint32_t t) {
+    static std::size_t hash(const glm::vec3* const (&p)[3]) {
         std::uint64_t h = 0x84222325cbf29ce4ull;
-        for (std::uint32_t c : mesh.triangles[t])
+        for (const glm::vec3* c : p)
             for (int a = 0; a < 3; ++a) {
                 std::uint32_t bits;
-                std::memcpy(&bits, &mesh.positions[c][a], sizeof bits);
+                std::memcpy(&bits, &(*c)[a], sizeof bits);
                 h = (h ^ bits) * 0x100000001b3ull;
             }
         return std::size_t(h ^ (h >> 29));
     }
-    static bool same(const TriangleMesh& mesh, std::uint32_t a, std::uint32_t b) {
-        for (int k = 0; k < 3; ++k)
-            if (std::memcmp(&mesh.positions[mesh.triangles[a][k]], &mesh.positions[mesh.triangles[b][k]],
-                            sizeof(glm::vec3)) != 0)
-                return false;
-        return true;
-    }
+    static bool same(const glm::vec3& a, const glm::vec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
     void grow(const TriangleMesh& mesh) {
         std::vector<std::uint32_t> old(slots_.size() * 2, kEmpty);
         old.swap(slots_);
         const std::size_t mask = slots_.size() - 1;
         for (std::uint32_t t : old)
             if (t != kEmpty) {
-                std::size_t i = hash(mesh, t) & mask;
+                const TriangleIndices& c = mesh.triangles[t];
+                const glm::vec3* const p[3] = {&mesh.positions[c[0]], &mesh.positions[c[1]], &mesh.positions[c[2]]};
+                std::size_t i = hash(p) & mask;
                 while (slots_[i] != kEmpty) i = (i + 1) & mask;
                 slots_[i] = t;
             }
@@ -321,40 +321,40 @@ ObjReadResult read_obj_text_into(std::string_view text, const std::string& name,
     SameTriangles seen(s.face_size.size());
     std::vector<glm::vec3> polygon;
     std::vector<std::array<std::uint32_t, 3>> split;
+    // Looked at every few thousand triangles: one face may be millions of them.
+    std::size_t next_look = 0;
+    auto stop = [&] {
+        next_look = mesh.triangles.size() + 16384;
+        if (buffer.cancelled()) return result.cancelled = true;
+        const std::size_t now = s.used + mesh.memory_bytes() + vertex_of.size() * kBytesPerCornerEntry +
+                                seen.bytes() + mesh.triangles.size() * kMeshBvhBytesPerTriangle;
+        if (now > limits.max_bytes) result.error = memory_error(limits.max_bytes);
+        return !result.error.empty();
+    };
     std::size_t corner = 0;
     for (std::size_t f = 0; f < s.face_size.size(); ++f) {
         const std::uint32_t n = s.face_size[f];
         const Corner* c = &s.corners[corner];
         corner += n;
-        if (f % 1024 == 0) {
-            if (buffer.cancelled()) {
-                result.cancelled = true;
-                return result;
-            }
-            const std::size_t now = s.used + mesh.memory_bytes() + vertex_of.size() * kBytesPerCornerEntry +
-                                    seen.bytes() + mesh.triangles.size() * kMeshBvhBytesPerTriangle;
-            if (now > limits.max_bytes) {
-                result.error = memory_error(limits.max_bytes);
-                return result;
-            }
-        }
+        if ((f % 1024 == 0 || mesh.triangles.size() >= next_look) && stop()) return result;
         polygon.resize(n);
         for (std::uint32_t k = 0; k < n; ++k) polygon[k] = s.v[std::size_t(c[k].index[0])];
         split.clear();
         split_polygon(polygon.data(), n, split);
         if (n > kEarClipCorners) ++result.fans;
         for (const auto& tri : split) {
-            const glm::vec3 &a = polygon[tri[0]], &b = polygon[tri[1]], &d = polygon[tri[2]];
-            const glm::vec3 normal = glm::cross(b - a, d - a);
-            if (!finite(a) || !finite(b) || !finite(d) || !(glm::dot(normal, normal) > 0.0f)) {
+            const glm::vec3* const p[3] = {&polygon[tri[0]], &polygon[tri[1]], &polygon[tri[2]]};
+            const glm::vec3 normal = glm::cross(*p[1] - *p[0], *p[2] - *p[0]);
+            if (!finite(*p[0]) || !finite(*p[1]) || !finite(*p[2]) || !(glm::dot(normal, normal) > 0.0f)) {
                 ++result.degenerate;
                 continue;
             }
-            mesh.triangles.push_back({vertex(c[tri[0]]), vertex(c[tri[1]]), vertex(c[tri[2]])});
-            if (seen.repeats(mesh, std::uint32_t(mesh.triangles.size() - 1))) {
-                mesh.triangles.pop_back();
+            if (seen.repeats(mesh, p, std::uint32_t(mesh.triangles.size()))) {
                 ++result.duplicates;
+                continue;
             }
+            mesh.triangles.push_back({vertex(c[tri[0]]), vertex(c[tri[1]]), vertex(c[tri[2]])});
+            if (mesh.triangles.size() >= next_look && stop()) return result;
         }
     }
     if (mesh.triangles.empty()) {
