@@ -38,7 +38,7 @@ std::optional<PixelArg> parse_pixel_arg(const std::string& text, int width, int 
 
 int print_inspection(const Scene& scene, const RenderJob& job, const PixelArg& p, const std::string& scene_path) {
     const std::string base = std::filesystem::path(scene_path).parent_path().string();
-    const PixelReport report = inspect_pixel(scene, job, p.x, p.y);
+    const PixelReport report = inspect_pixel(scene, job, p.x, p.y, job.cancel);
     if (report.cancelled) return kExitInterrupted;  // the caller says why
     std::cout << report_text(report, base.empty() ? "." : base);
     std::cout.flush();

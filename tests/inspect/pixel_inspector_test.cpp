@@ -309,11 +309,11 @@ TEST(PixelInspector, StopsWhenTheJobIsCancelled) {
     j.sampling.aa = Sampler::kMaxAa;
     j.sampling.spp = Sampler::kMaxSpp;
     const std::atomic<bool> cancel{true};
-    j.cancel = &cancel;
-    const PixelReport r = inspect_pixel(*scene, j, 3, 3);
+    const PixelReport r = inspect_pixel(*scene, j, 3, 3, &cancel);
     EXPECT_TRUE(r.cancelled);
+    // The job's own flag is the render's (the viewer's, set when a render is replaced): not the inspector's.
     j.sampling = {};
-    j.cancel = nullptr;
+    j.cancel = &cancel;
     EXPECT_FALSE(inspect_pixel(*scene, j, 3, 3).cancelled);
 }
 
