@@ -26,10 +26,14 @@ cmake --build "$build" -j"$(nproc)" --target "${targets[@]}"
 
 # Seeds: every scene of scenes/ and of the wild corpus for the scene targets, the CSCI 1230 JSON
 # scenes for cs1230_fuzzer, every image for the texture target (copied flat, so that libFuzzer reads nothing else from those folders).
+# Meshes: every OBJ file of both (and fuzz/obj_seeds/) for the OBJ target; scenes with a mesh after
+# their mark (fuzz/mesh_scene_seeds/, see load_render_fuzzer.cpp) for the scene targets.
 seeds="$build/seeds"
-rm -rf "$seeds" && mkdir -p "$seeds/scenes" "$seeds/images"
-find "$root/scenes" "$shared/scenes/wild" -type f -iname '*.sc' 2>/dev/null |
+rm -rf "$seeds" && mkdir -p "$seeds/scenes" "$seeds/images" "$seeds/objs"
+find "$root/scenes" "$shared/scenes/wild" "$root/fuzz/mesh_scene_seeds" -type f -iname '*.sc' 2>/dev/null |
     while read -r f; do cp "$f" "$seeds/scenes/$(echo "$f" | md5sum | cut -c1-12).sc"; done
+find "$root/scenes" "$shared/scenes" "$root/fuzz/obj_seeds" -type f -iname '*.obj' 2>/dev/null |
+    while read -r f; do cp "$f" "$seeds/objs/$(echo "$f" | md5sum | cut -c1-12).obj"; done
 mkdir -p "$seeds/json"
 find "$shared/scenes/cs1230" -type f -iname '*.json' -size -60k 2>/dev/null |
     while read -r f; do cp "$f" "$seeds/json/$(echo "$f" | md5sum | cut -c1-12).json"; done
@@ -46,6 +50,7 @@ for t in "${targets[@]}"; do
         texture_fuzzer) seed="$seeds/images" max_len=400000 dict=() ;;
         compare_image_fuzzer) seed="$root/fuzz/seeds/compare_image" max_len=400000 dict=() ;;
         cs1230_fuzzer) seed="$seeds/json" max_len=65536 dict=(-dict="$root/fuzz/cs1230.dict") ;;
+        obj_fuzzer) seed="$seeds/objs" max_len=65536 dict=(-dict="$root/fuzz/obj.dict") ;;
         *) seed="$seeds/scenes" max_len=65536 dict=(-dict="$root/fuzz/scene.dict") ;;
     esac
     echo "== $t: ${seconds}s"

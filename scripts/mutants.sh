@@ -95,7 +95,7 @@ mutant last-tile-column-dropped src/render/renderer.cpp \
     'for (int x = r.x0; x < r.x1; x += ts) tiles.push_back({x, y, std::min(x + ts, r.x1 - 1), std::min(y + ts, r.y1)});' \
     'Renderer.*:AdaptiveAntiAliasing.*'
 
-# --- Issue 10: the render contract and the distribution effects.
+# --- the render contract and the distribution effects.
 mutant disc-light-not-uniform src/integrator/light_sample.cpp \
     'const glm::vec2 d = light.radius * concentric_disc(u);' \
     'const glm::vec2 d = light.radius * u.x * glm::vec2(std::cos(2 * kPi * u.y), std::sin(2 * kPi * u.y));' \
@@ -121,7 +121,7 @@ mutant passes-restart-the-film src/render/tile_renderer.cpp \
     's0_ = 0;' \
     'SamplingDeterminism.*:RenderController.*'
 
-# --- Issue 11: the path tracer.
+# --- the path tracer.
 mutant path-mis-ignored-on-emitter-hits src/integrator/path_integrator.cpp \
     'radiance += beta * m.emit * power_heuristic(bsdf_pdf, pdf_light);' \
     'radiance += beta * m.emit;' \

@@ -83,7 +83,8 @@ int print_inspection(const Scene& scene, const RenderJob& job, const PixelArg& p
                      const InspectOutputs& outputs) {
     const std::string folder = std::filesystem::path(scene_path).parent_path().string();
     const std::string base = folder.empty() ? "." : folder;
-    const PixelReport report = inspect_pixel(scene, job, p.x, p.y);
+    const PixelReport report = inspect_pixel(scene, job, p.x, p.y, job.cancel);
+    if (report.cancelled) return kExitInterrupted;  // the caller says why
     if (!outputs.ray_tree_file.empty()) {
         const bool obj = std::filesystem::path(outputs.ray_tree_file).extension() == ".obj";
         const std::string title = "whitted: the ray tree of pixel " + std::to_string(p.x) + "," + std::to_string(p.y) +

@@ -17,6 +17,7 @@
 #include "render/load_scene.h"
 #include "render_options.h"
 #include "session/image_text.h"
+#include "session/run_limits.h"
 #include "session/session.h"
 
 namespace {
@@ -96,7 +97,16 @@ int run(int argc, char** argv) {
     if (int code = report_load(loaded, o, "whitted", limit_ran_out()); code != kExitOk) return code;
 
     RenderJob job = render_job(o, &interrupt_flag());
-    if (pixel) return print_inspection(*loaded.scene, job, *pixel, o.scene_path, inspect_outputs);
+    if (pixel) {
+        const int code = print_inspection(*loaded.scene, job, *pixel, o.scene_path, inspect_outputs);
+        if (code != kExitInterrupted) return code;
+        if (deadline.timed_out())
+            std::cerr << "whitted: error: the time limit of " << timeout_seconds(s)
+                      << " s (--timeout) ran out while inspecting\n";
+        else
+            std::cerr << "whitted: interrupted while inspecting\n";
+        return deadline.timed_out() ? kExitTimeout : kExitInterrupted;
+    }
     if (const std::string hint = sampled_effects_hint(loaded.stats.effects, job.sampling, job.integrator.mode);
         !hint.empty())
         std::cerr << "whitted: note: " << hint << "\n";
@@ -137,7 +147,19 @@ int run(int argc, char** argv) {
     }
 
     // An interrupted render never replaces the output: a good image from an earlier run may be
-    // there (a batch timeout's SIGTERM must not destroy it). Its part goes beside it.
+    // there (a batch timeout's SIGTERM must not destroy it). Its part goes beside it (the last
+    // whole pass, or the first pass's tiles if there are some and they can be written quickly).
+    if (const std::string why =
+            !complete && session.passes_done() == 0 ? why_no_partial_image(last.tiles_done, s.width, s.height) : "";
+        !why.empty()) {
+        if (limit_ran_out())
+            std::cerr << "whitted: error: the time limit of "
+                      << (deadline.timed_out() ? timeout_seconds(s) : s.time_limit) << " s (" << limit_ran_out()
+                      << ") ran out: " << why << ": nothing written\n";
+        else
+            std::cerr << "whitted: interrupted: " << why << ": nothing written\n";
+        return limit_ran_out() ? kExitTimeout : kExitInterrupted;
+    }
     const std::string written = complete ? o.output : partial_image_path(o.output);
     // .exr and .pfm keep the linear values; the 8-bit formats get them clamped (§7).
     std::string err;

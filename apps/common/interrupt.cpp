@@ -33,6 +33,9 @@ void install_interrupt_handler() {
     // Ctrl-C, a batch system's timeout (TERM), a closed terminal (HUP), Ctrl-\\ (QUIT): all stop
     // the render the same way, and none may leave a temporary file behind.
     for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) sigaction(sig, &sa, nullptr);
+    // A file size limit (`ulimit -f`): the write fails with EFBIG and is cleaned up like any
+    // failed write, instead of the process dying in it and leaving its temporary file.
+    signal(SIGXFSZ, SIG_IGN);
 }
 
 const std::atomic<bool>& interrupt_flag() { return g_interrupted; }

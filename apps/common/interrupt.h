@@ -1,7 +1,7 @@
 #pragma once
 // Ctrl-C handling: the first SIGINT, SIGTERM, SIGHUP or SIGQUIT asks the load or the render to stop
 // (a partial image is still written, beside the output); a second one exits at once, removing an
-// image file only partly written.
+// image file only partly written. SIGXFSZ is ignored: a write over `ulimit -f` fails and is cleaned up.
 #include <atomic>
 
 namespace whitted::cli {

@@ -2,10 +2,12 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+
+#include "base/read_file.h"
+#include "film/image_io.h"
 
 namespace whitted::mpi {
 namespace {
@@ -41,10 +43,19 @@ void append_record(int tile, const Film& film, const TileGrid& grid, std::vector
 
 }  // namespace
 
-std::string read_checkpoint(const std::string& path, const CheckpointKey& key, Film& film, std::vector<bool>& done) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return "cannot read the checkpoint '" + path + "'";
-    const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+std::string read_checkpoint(const std::string& path, const CheckpointKey& key, Film& film, std::vector<bool>& done,
+                            const std::atomic<bool>* cancel) {
+    const TileGrid& grid = key.grid;
+    // The largest a checkpoint of this job can be: its header and every tile once.
+    const std::size_t largest = sizeof(Header) + std::size_t(grid.count()) * (sizeof(std::int32_t) + sizeof(std::uint64_t)) +
+                                std::size_t(grid.width) * std::size_t(grid.height) * sizeof(FilmPixel);
+    const FileContents file = read_regular_file(path, largest, cancel);
+    if (file.cancelled) return "interrupted while reading the checkpoint '" + path + "'";
+    if (!file.ok())
+        return "cannot read the checkpoint '" + path + "': " + file.error +
+               (file.error.find("more than the limit") != std::string::npos ? " (no checkpoint of this job is as large)"
+                                                                            : "");
+    const std::string& bytes = file.bytes;
     Header h{};
     if (bytes.size() < sizeof h) return "'" + path + "' is not a whitted-mpi checkpoint";
     std::memcpy(&h, bytes.data(), sizeof h);
@@ -54,26 +65,67 @@ std::string read_checkpoint(const std::string& path, const CheckpointKey& key, F
         return "the checkpoint '" + path + "' is of a " + std::to_string(h.width) + "x" + std::to_string(h.height) +
                " image in tiles of " + std::to_string(h.tile_size) + "; resume with the options it was made with";
     if (h.job_hash != want.job_hash)
-        return "the checkpoint '" + path + "' was made from another scene, textures or render options";
-    done.assign(std::size_t(key.grid.count()), false);
-    const char* p = bytes.data() + sizeof h;
-    const char* end = bytes.data() + bytes.size();
-    Film scratch(key.grid.width, key.grid.height);
-    while (std::size_t(end - p) >= sizeof(std::int32_t)) {
-        const char* record = p;
+        return "the checkpoint '" + path + "' was made from another scene, textures, meshes or render options";
+    done.assign(std::size_t(grid.count()), false);
+    const char* const end = bytes.data() + bytes.size();
+    Film scratch(grid.width, grid.height);
+    // The record at p if it is whole and its checksum right (read into `scratch`): where it ends, else null.
+    auto record_at = [&](const char* p, int& tile) -> const char* {
+        const char* const record = p;
+        if (std::size_t(end - p) < sizeof(std::int32_t)) return nullptr;
         std::int32_t t = 0;
         std::memcpy(&t, p, sizeof t);
         p += sizeof t;
-        if (t < 0 || t >= key.grid.count()) break;
-        const Tile r = key.grid.tile(t);
+        if (t < 0 || t >= grid.count()) return nullptr;
         std::uint64_t sum = 0;
-        if (!read_tile_pixels(p, end, r, scratch) || std::size_t(end - p) < sizeof sum) break;  // cut short
+        if (!read_tile_pixels(p, end, grid.tile(t), scratch) || std::size_t(end - p) < sizeof sum) return nullptr;
         std::memcpy(&sum, p, sizeof sum);
-        if (sum != fnv1a(std::string_view(record, std::size_t(p - record)))) break;
-        p += sizeof sum;
-        film.copy_from(scratch, r);
-        done[std::size_t(t)] = true;
+        if (sum != fnv1a(std::string_view(record, std::size_t(p - record)))) return nullptr;
+        tile = t;
+        return p + sizeof sum;
+    };
+    // What a record of each size of tile the grid has takes (whole tiles, the last column, the
+    // last row, the corner): where the record after a bad one may start.
+    std::vector<std::size_t> sizes;
+    for (int t : {0, grid.columns() - 1, grid.count() - grid.columns(), grid.count() - 1}) {
+        const std::size_t size = sizeof(std::int32_t) + std::size_t(grid.pixels(t)) * sizeof(FilmPixel) + sizeof(std::uint64_t);
+        if (std::find(sizes.begin(), sizes.end(), size) == sizes.end()) sizes.push_back(size);
     }
+    const char* p = bytes.data() + sizeof h;
+    while (p < end) {
+        int t = 0;
+        const char* next = record_at(p, t);
+        for (std::size_t k = 0; !next && k < sizes.size(); ++k)  // a bad record: the next good one after it
+            if (sizes[k] < std::size_t(end - p) && (next = record_at(p + sizes[k], t))) p += sizes[k];
+        if (!next) break;  // cut short by a kill, or two bad records in a row: the rest is rendered again
+        film.copy_from(scratch, grid.tile(t));
+        done[std::size_t(t)] = true;
+        p = next;
+    }
+    return "";
+}
+
+namespace {
+
+// The same file, or the same place for one that does not exist yet (links followed).
+bool same_place(const std::string& a, const std::string& b) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::equivalent(a, b, ec) && !ec) return true;
+    const fs::path ca = fs::weakly_canonical(fs::absolute(a, ec), ec), cb = fs::weakly_canonical(fs::absolute(b, ec), ec);
+    return !ca.empty() && ca == cb;
+}
+
+}  // namespace
+
+std::string checkpoint_conflict(const std::string& checkpoint, const std::string& output,
+                                const std::vector<std::string>& inputs) {
+    const std::string head = "--checkpoint '" + checkpoint + "' ";
+    if (same_place(checkpoint, output)) return head + "is the output image; name another file";
+    if (same_place(checkpoint, partial_image_path(output)))
+        return head + "is where an interrupted job writes its part (" + partial_image_path(output) + "); name another file";
+    for (const std::string& in : inputs)
+        if (same_place(checkpoint, in)) return head + "is '" + in + "', which the job reads; name another file";
     return "";
 }
 

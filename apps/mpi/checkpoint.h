@@ -4,6 +4,7 @@
 // The file is a header and then one record per finished tile, each with its own checksum; it is
 // appended to as tiles arrive and flushed to the disk every few seconds. A record cut short by a
 // kill is dropped on resume (that tile is rendered again), never read as pixels.
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -23,8 +24,18 @@ struct CheckpointKey {
 };
 
 // Reads `path` into `film` (the whole image) and `done` (grid.count() long). Returns "" or why the
-// file cannot be used (unreadable, not a checkpoint, made for another job).
-std::string read_checkpoint(const std::string& path, const CheckpointKey& key, Film& film, std::vector<bool>& done);
+// file cannot be used (unreadable, not a checkpoint, made for another job). Read through
+// base/read_file.h: a regular file no larger than a checkpoint of this job can be, stopped by
+// `cancel`. A bad record (its checksum wrong) is skipped: the next one is looked for where it
+// would end, so one damaged tile costs that tile only.
+std::string read_checkpoint(const std::string& path, const CheckpointKey& key, Film& film, std::vector<bool>& done,
+                            const std::atomic<bool>* cancel = nullptr);
+
+// Why `checkpoint` may not be written by a job that reads `inputs` (the scene file, its textures
+// and meshes) and writes `output` (or, interrupted, its NAME.partial.EXT): it is one of them (a
+// checkpoint written over the scene destroyed it). "" when it may.
+std::string checkpoint_conflict(const std::string& checkpoint, const std::string& output,
+                                const std::vector<std::string>& inputs);
 
 class CheckpointWriter {
 public:

@@ -2,8 +2,8 @@
 //   mpirun -np N whitted-mpi SCENE -o OUT [every option of whitted] [--tile-size N]
 //          [--checkpoint FILE [--checkpoint-every S]] [--resume FILE]
 // The image is byte-identical to `whitted SCENE -o OUT` with the same options. Exit codes as
-// whitted's (0, 1 usage, 2 scene, 3 I/O, 130 interrupted) and 4: two ranks rendered a tile to
-// different bytes. Every rank exits with the same code.
+// whitted's (0, 1 usage, 2 scene, 3 I/O, 130 interrupted, also when --timeout ran out) and 4: two
+// ranks rendered a tile to different bytes. Every rank exits with the same code.
 #include <mpi.h>
 
 #include <chrono>
@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "accel/scene.h"
+#include "checkpoint.h"
 #include "interrupt.h"
 #include "load_report.h"
 #include "ranks.h"
@@ -66,7 +67,7 @@ int run(int argc, char** argv, int rank, int ranks) {
     app.set_version_flag("--version", "whitted-mpi 0.1.0");
     app.footer("Run as: mpirun -np N whitted-mpi SCENE -o OUT [options]. Only rank 0 reads files. Exit codes: 0 done, "
                "1 bad usage or mismatched ranks, 2 bad scene, 3 I/O failure, 4 ranks disagree on a tile, 130 "
-               "interrupted (the part rendered so far is written).");
+               "interrupted or --timeout ran out (the part rendered so far is written).");
     RenderOptions o;
     MpiOptions m;
     add_render_options(app, o, Frontend::Mpi);
@@ -98,6 +99,22 @@ int run(int argc, char** argv, int rank, int ranks) {
     const Deadline deadline(rank == 0 ? timeout_seconds(o.settings) : 0.0);
     SharedScene shared = share_scene(o, rank, &interrupt_flag(), deadline);
     if (shared.code != 0) return shared.code;
+
+    // A checkpoint is never written over what the job reads or writes (--checkpoint scene.sc
+    // destroyed the scene): rank 0, which reads and writes them, decides for all.
+    int refused = 0;
+    if (rank == 0 && !m.checkpoint.empty()) {
+        std::vector<std::string> inputs{o.scene_path};
+        for (const auto* list : {&shared.loaded.texture_paths, &shared.loaded.mesh_paths})
+            inputs.insert(inputs.end(), list->begin(), list->end());
+        for (const std::string& t : o.settings.texture_dirs) inputs.push_back(t);
+        if (std::string problem = checkpoint_conflict(m.checkpoint, o.output, inputs); !problem.empty()) {
+            std::cerr << "whitted-mpi: error: " << problem << "\n";
+            refused = 1;
+        }
+    }
+    MPI_Bcast(&refused, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (refused) return kExitUsage;
 
     RankSetup s;
     const auto integrator = make_integrator(*shared.loaded.scene, shared.loaded.scene->data.camera,

@@ -13,6 +13,7 @@
 #include "session/session.h"
 #include "film/image_io.h"
 #include "progress.h"
+#include "session/run_limits.h"
 #include "protocol.h"
 #include "ranks.h"
 #include "schedule.h"
@@ -163,6 +164,13 @@ struct Master {
 
     bool all_bye() const { return std::find(bye.begin(), bye.end(), false) == bye.end(); }
 
+    std::string why_stopped() const {
+        if (!s.deadline || !s.deadline->timed_out()) return "interrupted";
+        char limit[32];
+        std::snprintf(limit, sizeof limit, "%g s", timeout_seconds(s.options->settings));
+        return std::string("the time limit of ") + limit + " (--timeout) ran out";
+    }
+
     int run();
     // The film to `path` with whitted's words about it: every sample of the schedule's passes when
     // every tile is in (a partial image: its tiles have them, the others none).
@@ -240,11 +248,17 @@ int Master::run() {
     checkpoint.flush(true);
 
     int code = cli::kExitOk;
-    // An interrupted job never replaces the output (a good image may be there): its part goes beside it.
+    // An interrupted job never replaces the output (a good image may be there): its part goes beside
+    // it, if there is one and it can be written quickly.
     const std::string written = schedule.all_done() ? s.options->output : partial_image_path(s.options->output);
+    const std::string no_partial =
+        schedule.all_done() ? "" : why_no_partial_image(schedule.done_count(), s.grid.width, s.grid.height);
     if (!mismatch.empty()) {
         std::cerr << "whitted-mpi: error: " << mismatch << "; nothing written\n";
         code = kExitMismatch;
+    } else if (!no_partial.empty()) {
+        std::cerr << "whitted-mpi: " << why_stopped() << ": " << no_partial << ": nothing written\n";
+        code = cli::kExitInterrupted;
     } else if (std::string err = write_film(written); !err.empty()) {
         std::cerr << "whitted-mpi: error: " << err << "\n";
         code = cli::kExitIo;
@@ -254,8 +268,9 @@ int Master::run() {
                   << " tiles rendered so far to " << written << " (" << s.options->output << " was not written)\n";
         code = cli::kExitTimeout;
     } else if (!schedule.all_done()) {
-        std::cerr << "whitted-mpi: interrupted: wrote the " << schedule.done_count() << " of " << schedule.tile_count()
-                  << " tiles rendered so far to " << written << " (" << s.options->output << " was not written)\n";
+        std::cerr << "whitted-mpi: " << why_stopped() << ": wrote the " << schedule.done_count() << " of "
+                  << schedule.tile_count() << " tiles rendered so far to " << written << " (" << s.options->output
+                  << " was not written)\n";
         code = cli::kExitInterrupted;
     } else if (!s.options->quiet) {
         std::cerr << "wrote " << s.options->output << "\n";
@@ -298,7 +313,7 @@ int run_master(const RankSetup& s) {
     Film film(s.grid.width, s.grid.height);
     std::vector<bool> done;
     if (!s.resume.empty()) {
-        if (std::string err = read_checkpoint(s.resume, {s.job_hash, s.grid}, film, done); !err.empty()) {
+        if (std::string err = read_checkpoint(s.resume, {s.job_hash, s.grid}, film, done, s.interrupted); !err.empty()) {
             std::cerr << "whitted-mpi: error: " << err << "\n";
             const std::int32_t c = cli::kExitUsage;
             // Workers are waiting for work: tell them the job is over.

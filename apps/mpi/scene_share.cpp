@@ -5,9 +5,7 @@
 #include <chrono>
 #include <climits>
 #include <cstring>
-#include <fstream>
 #include <iostream>
-#include <iterator>
 #include <vector>
 
 #include "film/image_io.h"
@@ -22,9 +20,8 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 std::uint64_t file_hash(const char* path) {
-    std::ifstream in(path, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return fnv1a(bytes);
+    const FileContents file = read_regular_file(path, std::size_t(1) << 30);
+    return fnv1a(file.bytes);
 }
 
 // MPI counts are ints: large payloads go in pieces.
@@ -54,29 +51,39 @@ bool get(const char*& p, const char* end, std::string& s) {
     return true;
 }
 
-// The scene text and each texture file: [text][count][name, bytes]...
-std::vector<char> pack(const std::string& text, const TextureFiles& files) {
-    std::vector<char> out;
-    put(out, text);
+void put_files(std::vector<char>& out, const TextureFiles& files) {
     put(out, std::to_string(files.size()));
     for (const auto& [name, bytes] : files) {
         put(out, name);
         put(out, std::string(bytes.begin(), bytes.end()));
     }
-    return out;
 }
 
-bool unpack(const std::vector<char>& in, std::string& text, TextureFiles& files) {
-    const char* p = in.data();
-    const char* end = p + in.size();
+bool get_files(const char*& p, const char* end, TextureFiles& files) {
     std::string count;
-    if (!get(p, end, text) || !get(p, end, count)) return false;
+    if (!get(p, end, count)) return false;
     for (long i = 0, n = std::stol(count); i < n; ++i) {
         std::string name, bytes;
         if (!get(p, end, name) || !get(p, end, bytes)) return false;
         files[name].assign(bytes.begin(), bytes.end());
     }
     return true;
+}
+
+// The scene text, each texture file and each mesh file: [text][count][name, bytes]...[count][name, bytes]...
+// (every input byte: the ranks read no file of their own, and the job's hash covers them all).
+std::vector<char> pack(const std::string& text, const TextureFiles& textures, const TextureFiles& meshes) {
+    std::vector<char> out;
+    put(out, text);
+    put_files(out, textures);
+    put_files(out, meshes);
+    return out;
+}
+
+bool unpack(const std::vector<char>& in, std::string& text, TextureFiles& textures, TextureFiles& meshes) {
+    const char* p = in.data();
+    const char* end = p + in.size();
+    return get(p, end, text) && get_files(p, end, textures) && get_files(p, end, meshes);
 }
 
 }  // namespace
@@ -111,7 +118,7 @@ SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic
     const auto start = Clock::now();
     if (rank == 0) {
         // Only regular files, within the size limit, stoppable (a FIFO or /dev/zero is refused).
-        FileContents file = read_regular_file(o.scene_path, lo.max_file_bytes, cancel);
+        FileContents file = read_scene_file(o.scene_path, lo);
         // An unreadable file: the library's own load says so, as whitted would.
         lo.textures.keep_files = true;
         if (std::string problem = output_unwritable(o.output); !problem.empty()) {
@@ -122,8 +129,9 @@ SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic
             s.loaded = !file.ok() ? load_scene(o.scene_path, lo) : load_scene_text(file.bytes, o.scene_path, lo);
             s.code = cli::report_load(s.loaded, o, "whitted-mpi", deadline.timed_out() ? "--timeout" : nullptr);
         }
-        if (s.code == 0) payload = pack(file.bytes, s.loaded.texture_files);
+        if (s.code == 0) payload = pack(file.bytes, s.loaded.texture_files, s.loaded.mesh_files);
         s.loaded.texture_files.clear();
+        s.loaded.mesh_files.clear();
         s.load_seconds = since(start);
     }
     MPI_Bcast(&s.code, 1, MPI_INT, 0, MPI_COMM_WORLD);
@@ -136,13 +144,14 @@ SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic
     if (rank != 0) {
         const auto t = Clock::now();
         std::string text;
-        TextureFiles files;
+        TextureFiles files, meshes;
         int code = 0;
-        if (!unpack(payload, text, files)) {
+        if (!unpack(payload, text, files, meshes)) {
             code = cli::kExitIo;
         } else {
             payload = {};
             lo.textures.preread = &files;
+            lo.preread_meshes = &meshes;
             s.loaded = load_scene_text(text, o.scene_path, lo);
             if (!s.loaded.ok()) code = s.loaded.cancelled ? cli::kExitInterrupted : cli::kExitScene;
         }

@@ -14,6 +14,8 @@
 #include <optional>
 #include <vector>
 
+#include "base/file_replace.h"
+#include "base/read_file.h"
 #include "cs1230/detect.h"
 #include "flatten/flatten.h"
 #include "parse/number.h"
@@ -339,21 +341,33 @@ CameraReplacement replace_camera_block(std::string_view text, const CameraDesc& 
     return r;
 }
 
+namespace {
+
+// Writes all of `text` to `fd`; false (errno set) if it could not.
+bool write_all(int fd, const std::string& text) {
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        done += std::size_t(n);
+    }
+    return true;
+}
+
+constexpr std::size_t kMaxSceneBytes = std::size_t(256) << 20;
+
+}  // namespace
+
 CameraSave plan_camera_save(const std::string& path, const CameraDesc& camera) {
     CameraSave plan;
     plan.path = path;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        plan.error = "cannot read '" + path + "': " + std::strerror(errno);
+    const FileContents file = read_regular_file(path, kMaxSceneBytes);
+    if (!file.ok()) {
+        plan.error = "cannot read '" + path + "': " + file.error;
         return plan;
     }
-    std::ostringstream buf;
-    buf << in.rdbuf();
-    if (in.bad()) {
-        plan.error = "cannot read '" + path + "'";
-        return plan;
-    }
-    plan.old_text = buf.str();
+    plan.old_text = file.bytes;
     // A CSCI 1230 JSON file (§9.5) has no camera block to replace: a bracket block would break it.
     if (cs1230::is_json_scene(path, plan.old_text)) {
         plan.error = "'" + path + "' is a CSCI 1230 JSON file, whose camera the viewer does not write: set its "
@@ -370,39 +384,44 @@ std::string commit_camera_save(const CameraSave& plan) {
     if (!plan.error.empty()) return plan.error;
     const std::string& path = plan.path;
     {
-        std::ifstream in(path, std::ios::binary);
-        std::ostringstream now;
-        now << in.rdbuf();
-        if (!in || now.str() != plan.old_text) return "'" + path + "' changed since: nothing written (save again)";
+        const FileContents now = read_regular_file(path, kMaxSceneBytes);
+        if (!now.ok() || now.bytes != plan.old_text) return "'" + path + "' changed since: nothing written (save again)";
     }
     const std::string& text = plan.replacement.text;
-    struct stat st{};
-    const bool have_mode = ::stat(path.c_str(), &st) == 0;
-    const fs::path target(path);
+    // The file a link leads to is the scene (the link stays); the new text keeps its permissions.
+    const ReplaceTarget target = replace_target(path);
+    const fs::path real(target.path);
     // A hidden file in the same folder (so the rename stays on one file system).
-    std::string name = target.filename().string();
+    std::string name = real.filename().string();
     name.insert(name.begin(), '.');
     name.append(".camera-XXXXXX");
-    std::string tmp = (target.parent_path() / name).string();
+    std::string tmp = (real.parent_path() / name).string();
     const int fd = ::mkstemp(tmp.data());
-    if (fd < 0) return "cannot write a temporary file next to '" + path + "': " + std::strerror(errno);
-    std::size_t done = 0;
-    bool ok = true;
-    while (ok && done < text.size()) {
-        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        ok = n > 0;
-        if (ok) done += std::size_t(n);
-    }
-    const int write_errno = errno;
-    if (ok && have_mode) ::fchmod(fd, st.st_mode & 07777);
-    ok = ok && ::fsync(fd) == 0;
+    if (fd < 0) return "cannot write a temporary file next to '" + target.path + "': " + std::strerror(errno);
+    keep_permissions(fd, target);
+    bool ok = write_all(fd, text) && ::fsync(fd) == 0;
+    int error = errno;
     ok = (::close(fd) == 0) && ok;
-    if (!ok || ::rename(tmp.c_str(), path.c_str()) != 0) {
-        const int e = ok ? errno : write_errno;
+    if (!ok) {
         ::unlink(tmp.c_str());
-        return "cannot write '" + path + "': " + std::strerror(e);
+        return "cannot write '" + path + "': " + std::strerror(error);
     }
+    if (target.links <= 1) {
+        if (::rename(tmp.c_str(), target.path.c_str()) != 0) {
+            error = errno;
+            ::unlink(tmp.c_str());
+            return "cannot write '" + path + "': " + std::strerror(error);
+        }
+        return "";
+    }
+    // Hard links: a rename would leave the other names the old scene. The file itself is rewritten,
+    // now that the new text is safe beside it (kept there if this fails half-way).
+    const int out = ::open(target.path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    ok = out >= 0 && write_all(out, text) && ::fsync(out) == 0;
+    error = errno;
+    if (out >= 0) ok = (::close(out) == 0) && ok;
+    if (!ok) return "cannot write '" + path + "': " + std::strerror(error) + " (the new text is in '" + tmp + "')";
+    ::unlink(tmp.c_str());
     return "";
 }
 

@@ -44,9 +44,12 @@ struct CameraSave {
 };
 CameraSave plan_camera_save(const std::string& path, const CameraDesc& camera);
 
-// Writes a planned save, atomically (a temporary file in the same folder, renamed over the old one,
-// keeping its permissions), if the file still holds the text it was planned on. "" or an error;
-// on error the file is untouched.
+// Writes a planned save if the file still holds the text it was planned on, atomically: the new
+// text goes to a temporary file in the same folder, which is renamed over the old one (keeping its
+// permissions, owner and group where allowed). Through a symbolic link, the file it leads to is
+// replaced (the link stays); a file with several hard links is rewritten in place once the new text
+// is safe in the temporary file, so that every name sees it. Returns "" or an error message; on
+// error the file is untouched (in place: the message names the temporary file holding the new text).
 std::string commit_camera_save(const CameraSave& plan);
 
 // Both at once.

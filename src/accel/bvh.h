@@ -3,6 +3,7 @@
 // binned surface area heuristic, then collapsed into a 4-wide tree whose nodes hold their four
 // children's boxes side by side, so that one SIMD test checks all four. Instances are reordered
 // so that every leaf is a contiguous range.
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -22,16 +23,19 @@ struct MeshBvh;  // accel/mesh_bvh.h
 // Bvh4Node::kMaxInstances instances. Mesh instances take their bounds from `meshes`. With
 // `leaf_order`: the instance now at place i was at (*leaf_order)[i] (for side tables that follow
 // the instances).
+// With `cancel` set (by another thread or a signal handler) the build stops within a few nodes and
+// leaves an empty tree, the instances in their order and `leaf_order` empty.
 Bvh build_bvh(std::vector<Instance>& instances, int threads = 0, const std::vector<TriangleMesh>* meshes = nullptr,
-              std::vector<std::uint32_t>* leaf_order = nullptr);
+              std::vector<std::uint32_t>* leaf_order = nullptr, const std::atomic<bool>* cancel = nullptr);
 
 // The same tree over any n boxes (box_of(i), i < n); order[k] gets the primitive that leaf slot k
 // holds (leaves refer to slots). The BVH of instances and of a mesh's triangles are both this.
 Bvh build_bvh_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of, const BvhBuildCosts& costs,
-                         int threads, std::vector<std::uint32_t>& order);
+                         int threads, std::vector<std::uint32_t>& order, const std::atomic<bool>* cancel = nullptr);
 // The same collapsed into 8-wide nodes (a mesh's BVH).
 Bvh8 build_bvh8_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of,
-                           const BvhBuildCosts& costs, int threads, std::vector<std::uint32_t>& order);
+                           const BvhBuildCosts& costs, int threads, std::vector<std::uint32_t>& order,
+                           const std::atomic<bool>* cancel = nullptr);
 
 struct Hit {
     float t;

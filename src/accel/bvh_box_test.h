@@ -17,9 +17,14 @@ namespace whitted::bvh_detail {
 
 // The ray as the box test wants it: origin, reciprocal direction (bvh_ray.h) and which box row
 // is the near plane per axis.
+// A ray whose origin or direction is not finite (an object-space ray of an object far from the
+// origin and scaled far down overflows) meets nothing: its box tests would give NaN, which the
+// SIMD min and max can turn into "entered" for a node's unused slots (boxes +inf..-inf), whose
+// child 0 is the root, and the walk would go round forever (found by fuzzing).
 struct BoxRay {
     float o[3], inv[3];
     int near_row[3], far_row[3];
+    bool finite = true;
     explicit BoxRay(const Ray& r) {
         for (int a = 0; a < 3; ++a) {
             o[a] = r.origin[a];
@@ -27,6 +32,7 @@ struct BoxRay {
             const bool neg = std::signbit(inv[a]);
             near_row[a] = neg ? 3 + a : a;
             far_row[a] = neg ? a : 3 + a;
+            finite = finite && std::isfinite(r.origin[a]) && std::isfinite(r.direction[a]);
         }
     }
 };

@@ -5,6 +5,7 @@
 // children), and the instances are reordered to leaf order.
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -116,14 +117,17 @@ void parallel_chunks(std::size_t n, int threads, Body body) {
 // Builds the subtree of `root` (whose node nodes[root.node] exists) into `nodes`. Tasks of at most
 // `defer_below` references are not built but appended to *deferred (when given), for other threads.
 template <class Nodes>
-void build_subtree(BigVector<PrimRef>& refs, const Task& root, Nodes& nodes,
-                   std::uint32_t defer_below, std::vector<Task>* deferred, const BvhBuildCosts& costs) {
+void build_subtree(BigVector<PrimRef>& refs, const Task& root, Nodes& nodes, std::uint32_t defer_below,
+                   std::vector<Task>* deferred, const BvhBuildCosts& costs, const std::atomic<bool>* cancel) {
     const float traversal_cost = costs.traversal_cost;
     const std::uint32_t max_leaf = costs.max_leaf;
     const std::uint32_t block = costs.block;
     auto blocks = [block](std::uint32_t n) { return float((n + block - 1) / block); };
     std::vector<Task> stack{root};
-    while (!stack.empty()) {
+    // A node's binning reads its references once: looking at `cancel` every few nodes stops a
+    // build of millions within a fraction of a second (the tree left is then unusable).
+    for (std::uint32_t visited = 0; !stack.empty(); ++visited) {
+        if (visited % 64 == 0 && cancel && cancel->load(std::memory_order_relaxed)) return;
         const Task task = stack.back();
         stack.pop_back();
         if (deferred && task.end - task.begin <= defer_below) {
@@ -169,13 +173,18 @@ void build_subtree(BigVector<PrimRef>& refs, const Task& root, Nodes& nodes,
                 const float f = (centre(r) - lo) * scale;
                 return f < float(kBins - 1) ? (f > 0.0f ? static_cast<int>(f) : 0) : kBins - 1;
             };
-            for (std::uint32_t i = task.begin; i < task.end; ++i) {
-                const PrimRef& r = refs[i];
-                Bin& b = bins[bin_of(r)];
-                b.box.grow(r.lo, r.hi);
-                const V4 c = r.lo + r.hi;
-                b.centres.grow(c, c);
-                ++b.count;
+            // (In pieces: the top nodes of a build of millions bin millions each.)
+            constexpr std::uint32_t kPiece = 1u << 18;
+            for (std::uint32_t from = task.begin; from < task.end; from += std::min(kPiece, task.end - from)) {
+                if (from != task.begin && cancel && cancel->load(std::memory_order_relaxed)) return;
+                for (std::uint32_t i = from, to = from + std::min(kPiece, task.end - from); i < to; ++i) {
+                    const PrimRef& r = refs[i];
+                    Bin& b = bins[bin_of(r)];
+                    b.box.grow(r.lo, r.hi);
+                    const V4 c = r.lo + r.hi;
+                    b.centres.grow(c, c);
+                    ++b.count;
+                }
             }
             // Sweep from the right to get the cost of every right side, then from the left.
             std::array<float, kBins> right_cost{};
@@ -229,19 +238,20 @@ void build_subtree(BigVector<PrimRef>& refs, const Task& root, Nodes& nodes,
 // The binary tree over all refs. The top is built by this thread; the subtrees below it are
 // built in parallel into separate arrays, then appended in a fixed order (so the result does not
 // depend on the thread count or timing).
-BigVector<BinNode> build_binary(BigVector<PrimRef>& refs, int threads, const BvhBuildCosts& costs) {
+BigVector<BinNode> build_binary(BigVector<PrimRef>& refs, int threads, const BvhBuildCosts& costs,
+                                const std::atomic<bool>* cancel) {
     const std::uint32_t n = static_cast<std::uint32_t>(refs.size());
     BigVector<BinNode> nodes;
     nodes.reserve(2 * std::size_t(n));
     nodes.emplace_back();
     const Task root{0, n, 0, 0, {}, {}, false};
     if (threads == 1 || n < kParallelBuildMin) {
-        build_subtree(refs, root, nodes, 0, nullptr, costs);
+        build_subtree(refs, root, nodes, 0, nullptr, costs, cancel);
         return nodes;
     }
     // Subtrees of at most n/16 refs: enough pieces to balance two to eight threads.
     std::vector<Task> deferred;
-    build_subtree(refs, root, nodes, n / 16, &deferred, costs);
+    build_subtree(refs, root, nodes, n / 16, &deferred, costs, cancel);
     // Ordinary pages here: each part ends in a partly used page, which on 2 MB pages would be
     // resident whole (16–32 parts: +25 MB of peak for 1M triangles, to save 0.05 s).
     std::vector<std::vector<BinNode>> parts(deferred.size());
@@ -251,7 +261,7 @@ BigVector<BinNode> build_binary(BigVector<PrimRef>& refs, int threads, const Bvh
         part.emplace_back();
         Task t = deferred[i];
         t.node = 0;
-        build_subtree(refs, t, part, 0, nullptr, costs);
+        build_subtree(refs, t, part, 0, nullptr, costs, cancel);
     });
     // Part node 0 is the deferred task's own node; part node k > 0 goes to base + k - 1.
     for (std::size_t i = 0; i < parts.size(); ++i) {
@@ -357,24 +367,34 @@ std::uint32_t collapse(const BigVector<BinNode>& bin, std::uint32_t root, BigVec
 
 template <class Node>
 BasicBvh<Node> build_wide_bvh(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of,
-                              const BvhBuildCosts& costs, int threads_asked, std::vector<std::uint32_t>& order) {
+                              const BvhBuildCosts& costs, int threads_asked, std::vector<std::uint32_t>& order,
+                              const std::atomic<bool>* cancel) {
     const int threads = build_threads(threads_asked);
     BasicBvh<Node> bvh;
     order.clear();
     if (n == 0) return bvh;
     if (n >= Bvh4Node::kMaxInstances) throw std::length_error("too many primitives for the BVH");
 
+    order.resize(n);  // leaf order: the primitive that goes to place i
+    auto cancelled = [&] {
+        if (!cancel || !cancel->load(std::memory_order_relaxed)) return false;
+        for (std::uint32_t i = 0; i < n; ++i) order[i] = i;  // an unfinished tree: nothing of it is kept
+        return true;
+    };
+    if (cancelled()) return bvh;
     BigVector<PrimRef> refs(n);
     parallel_chunks(n, threads, [&](std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t i = begin; i < end; ++i) {
+            if (i % 16384 == 0 && cancel && cancel->load(std::memory_order_relaxed)) return;
             const Bounds b = box_of(i);
             float index;
             std::memcpy(&index, &i, 4);
             refs[i] = {V4{b.lo.x, b.lo.y, b.lo.z, index}, V4{b.hi.x, b.hi.y, b.hi.z, 0.0f}};
         }
     });
-    order.resize(n);  // leaf order: the primitive that goes to place i
-    BigVector<BinNode> bin = build_binary(refs, threads, costs);
+    if (cancelled()) return bvh;
+    BigVector<BinNode> bin = build_binary(refs, threads, costs, cancel);
+    if (cancelled()) return bvh;
     for (std::uint32_t i = 0; i < n; ++i) order[i] = refs[i].index();
     BigVector<PrimRef>().swap(refs);  // lower the peak: the refs are done with
     bvh.box = bin[0].box;
@@ -388,32 +408,39 @@ BasicBvh<Node> build_wide_bvh(std::size_t n, const std::function<Bounds(std::uin
 }  // namespace
 
 Bvh build_bvh_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of, const BvhBuildCosts& costs,
-                         int threads, std::vector<std::uint32_t>& order) {
+                         int threads, std::vector<std::uint32_t>& order, const std::atomic<bool>* cancel) {
     Bvh bvh;
-    static_cast<BasicBvh<Bvh4Node>&>(bvh) = build_wide_bvh<Bvh4Node>(n, box_of, costs, threads, order);
+    static_cast<BasicBvh<Bvh4Node>&>(bvh) = build_wide_bvh<Bvh4Node>(n, box_of, costs, threads, order, cancel);
     return bvh;
 }
 
 Bvh8 build_bvh8_over_boxes(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of,
-                           const BvhBuildCosts& costs, int threads, std::vector<std::uint32_t>& order) {
-    return build_wide_bvh<Bvh8Node>(n, box_of, costs, threads, order);
+                           const BvhBuildCosts& costs, int threads, std::vector<std::uint32_t>& order,
+                           const std::atomic<bool>* cancel) {
+    return build_wide_bvh<Bvh8Node>(n, box_of, costs, threads, order, cancel);
 }
 
 Bvh build_bvh(std::vector<Instance>& instances, int threads, const std::vector<TriangleMesh>* meshes,
-              std::vector<std::uint32_t>* leaf_order) {
+              std::vector<std::uint32_t>* leaf_order, const std::atomic<bool>* cancel) {
     const float traversal_cost = instances.size() > kLargeScene ? kTraversalCostLarge : kTraversalCostCached;
     std::vector<std::uint32_t> source;
     Bvh bvh;
     auto box_of = [&](std::uint32_t i) { return padded_world_bounds(instances[i], meshes); };
     if (meshes && !meshes->empty()) {  // 8-wide (bvh_node.h)
-        bvh.wide = build_wide_bvh<Bvh8Node>(instances.size(), box_of, {traversal_cost, kMaxInstanceLeaf}, threads, source);
+        bvh.wide = build_wide_bvh<Bvh8Node>(instances.size(), box_of, {traversal_cost, kMaxInstanceLeaf}, threads,
+                                            source, cancel);
         bvh.wide.nodes.shrink_to_fit();
         bvh.box = bvh.wide.box;
     } else {
         static_cast<BasicBvh<Bvh4Node>&>(bvh) =
-            build_wide_bvh<Bvh4Node>(instances.size(), box_of, {traversal_cost, kMaxInstanceLeaf}, threads, source);
+            build_wide_bvh<Bvh4Node>(instances.size(), box_of, {traversal_cost, kMaxInstanceLeaf}, threads, source,
+                                     cancel);
     }
     const std::size_t n = instances.size();
+    if (cancel && cancel->load(std::memory_order_relaxed)) {  // the instances stay as they were
+        if (leaf_order) leaf_order->clear();
+        return Bvh{};
+    }
     if (leaf_order) *leaf_order = source;
     // Reorder the instances to leaf order in place, following the permutation's cycles.
     for (std::uint32_t i = 0; i < n; ++i) {

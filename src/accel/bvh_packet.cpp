@@ -253,12 +253,13 @@ inline void offer4(const packet_shapes::Span4& s, std::uint32_t index, int g, un
 }
 
 // Offers instance `index` to the lanes in `mask`: four lanes at a time for the shapes that
-// bvh_packet_shapes.h has, one lane at a time (bvh_ray.h) for the cone. (A scene with meshes has
+// bvh_packet_shapes.h has, one lane at a time (bvh_ray.h) for the cone and for an instance scaled
+// so far that its directions are rescaled (Instance::rescale). (A scene with meshes has
 // an 8-wide top level and no packet walk: bvh_node.h.)
 inline void offer_instance(const Instance& inst, std::uint32_t index, const Ray (&rays)[kPacketSize],
                            const PacketRays& r, unsigned mask, float t_min, float t_max, __m128 tmin, __m128 tmax,
                            Nearest& nearest) {
-    if (inst.kind == ShapeKind::Cone) {
+    if (inst.kind == ShapeKind::Cone || inst.rescale) {
         for (unsigned m = mask; m != 0; m &= m - 1) {
             const int l = lowest_bit(m);
             bvh_detail::offer_nearest(bvh_detail::intersect_instance(inst, rays[l]), index, t_min, t_max,

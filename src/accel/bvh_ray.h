@@ -29,6 +29,8 @@ inline float safe_reciprocal(float d) { return 1.0f / (std::fabs(d) > 1e-30f ? d
 // The object-space interval of instance `inst` along the world ray.
 WHITTED_BVH_INLINE shape_math::Span<float> intersect_instance(const Instance& inst, const Ray& ray) {
     const Ray o = to_object_space(inst, ray);
+    if (inst.rescale) [[unlikely]]
+        return shape_math::intersect_rescaled<float>(inst.kind, o.origin, o.direction);
     return shape_math::intersect<float>(inst.kind, o.origin, o.direction);
 }
 

@@ -73,6 +73,7 @@ bool nearest_unit_shapes(const Bvh& bvh, const Instance* inst, const Ray& ray, f
     };
     if (bvh.nodes.empty()) return false;
     const bvh_detail::BoxRay box_ray(ray);
+    if (!box_ray.finite) return false;
     const bvh_detail::BoxTester tester(box_ray);
     const Bvh4Node* nodes = bvh.nodes.data();
     bool found = false;

@@ -21,7 +21,7 @@ constexpr int walk_stack_size(int W) { return (W - 1) * (kStackSize / 3); }
 template <class Tester, class Node, class Leaf>
 WHITTED_BVH_INLINE void walk_nearest_with(const Tester& tester, const BasicBvh<Node>& bvh, float t_min, float& best,
                                           Leaf&& leaf) {
-    if (bvh.nodes.empty()) return;
+    if (bvh.nodes.empty() || !tester.r.finite) return;
     constexpr int W = Node::kWidth;
     struct StackEntry {
         std::uint32_t ref;
@@ -100,7 +100,7 @@ WHITTED_BVH_INLINE void walk_nearest(const BasicBvh<Node>& bvh, const Ray& ray, 
 template <bool kNearFirst, class Tester, class Node, class Leaf>
 WHITTED_BVH_INLINE bool walk_any_with(const Tester& tester, const BasicBvh<Node>& bvh, float t_min, float t_max,
                                       Leaf&& leaf) {
-    if (bvh.nodes.empty()) return true;
+    if (bvh.nodes.empty() || !tester.r.finite) return true;
     constexpr int W = Node::kWidth;
     const typename Tester::Limit lo = tester.limit(t_min), hi = tester.limit(t_max);
     const Node* nodes = bvh.nodes.data();

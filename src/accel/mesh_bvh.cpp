@@ -78,12 +78,13 @@ std::size_t MeshBvh::memory_bytes() const {
     return bytes_of(bvh.nodes) + bytes_of(blocks) + bytes_of(block_first_triangle) + sizeof(*this);
 }
 
-MeshBvh build_mesh_bvh(TriangleMesh& mesh, int threads) {
+MeshBvh build_mesh_bvh(TriangleMesh& mesh, int threads, const std::atomic<bool>* cancel) {
     MeshBvh out;
     std::vector<std::uint32_t> order;
     out.bvh = build_bvh8_over_boxes(
         mesh.triangles.size(), [&](std::uint32_t t) { return padded_triangle_bounds(mesh, t); }, kTriangleCosts, threads,
-        order);
+        order, cancel);
+    if (out.bvh.nodes.empty()) return out;  // cancelled
     permute(mesh.triangles, order);
     make_blocks(out, mesh, threads);
     out.bvh.nodes.shrink_to_fit();  // the build reserves for the worst case; a mesh lives long

@@ -2,6 +2,7 @@
 // The bottom level of the two-level BVH: one SAH BVH over a mesh's triangles, in object space,
 // built once per mesh file and shared by all its instances; and the ray queries against it. The
 // top level (accel/bvh.h) reaches these through a mesh instance, with the ray in object space.
+#include <atomic>
 #include <cstdint>
 
 #include "accel/bvh_box_test_avx2.h"
@@ -30,7 +31,8 @@ struct MeshBvh {
 // Builds the BVH of `mesh`, reordering mesh.triangles to its leaf order (and copying them into
 // its blocks); sets mesh.box. On `threads` threads (0 = all); the result is the same for any count.
 // Throws std::length_error beyond Bvh8Node::kMaxInstances triangles.
-MeshBvh build_mesh_bvh(TriangleMesh& mesh, int threads = 0);
+// With `cancel` set the build stops early and leaves an empty BVH.
+MeshBvh build_mesh_bvh(TriangleMesh& mesh, int threads = 0, const std::atomic<bool>* cancel = nullptr);
 
 struct MeshHit {
     float t, u, v;

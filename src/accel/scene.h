@@ -52,7 +52,9 @@ struct Scene {
 };
 
 // Builds the BVH of every mesh (reordering its triangles), then the BVH over the instances
-// (reordering data.instances to match it), on `threads` threads (0 = all).
-Scene accelerate(SceneData data, int threads = 0);
+// (reordering data.instances to match it), on `threads` threads (0 = all). With `cancel` set
+// (another thread, a signal handler) it stops within a fraction of a second, leaving a scene that
+// must not be used.
+Scene accelerate(SceneData data, int threads = 0, const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace whitted

@@ -1,7 +1,9 @@
 #include "base/read_file.h"
 
 #include <fcntl.h>
+#include <linux/openat2.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -10,6 +12,7 @@
 #include <cstring>
 
 namespace whitted {
+namespace fs = std::filesystem;
 namespace {
 
 class Fd {
@@ -20,50 +23,105 @@ public:
     }
     Fd(const Fd&) = delete;
     Fd& operator=(const Fd&) = delete;
-    Fd(Fd&& o) noexcept : fd_(o.fd_) { o.fd_ = -1; }
     int get() const { return fd_; }
 
 private:
     int fd_;
 };
 
-// Opens `path` for reading if it is a regular file (without blocking on a FIFO); fills
-// out.error and returns an invalid Fd otherwise. `size` gets its size.
-Fd open_regular_file(const std::string& path, FileContents& out, std::size_t& size) {
-    Fd fd(open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
-    if (fd.get() < 0) {
-        out.error = std::strerror(errno);
+constexpr int kReadFlags = O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY;
+
+// Set when the kernel has no openat2 (before Linux 5.6), or by the tests.
+std::atomic<bool> g_part_by_part{false};
+
+// `path` absolute and normalised, without a trailing separator.
+fs::path normalised(const fs::path& path) {
+    std::error_code ec;
+    fs::path p = fs::absolute(path, ec);
+    if (ec) p = path;
+    p = p.lexically_normal();
+    if (p.has_relative_path() && p.filename().empty()) p = p.parent_path();  // "dir/" → "dir"
+    return p;
+}
+
+// The part of `path` below `folder` ("." for the folder itself), or "" when it is not below it.
+fs::path below(const fs::path& path, const fs::path& folder) {
+    auto [f, p] = std::mismatch(folder.begin(), folder.end(), path.begin(), path.end());
+    if (f != folder.end()) return {};
+    fs::path rest;
+    for (; p != path.end(); ++p) rest /= *p;
+    return rest.empty() ? fs::path(".") : rest;
+}
+
+// Opens `rel` (no `..` in it) beneath the folder `dir` one part at a time, refusing every link.
+int open_part_by_part(int dir, const fs::path& rel) {
+    std::vector<std::string> parts;
+    for (const fs::path& p : rel) parts.push_back(p.string());
+    int at = dir, held = -1;
+    auto done = [&](int fd) {
+        const int saved = errno;
+        if (held >= 0) close(held);
+        errno = saved;
         return fd;
+    };
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+        const int next = openat(at, parts[i].c_str(), O_PATH | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+        if (next < 0) return done(-1);
+        done(0);
+        held = at = next;
     }
-    struct stat st {};
-    if (fstat(fd.get(), &st) != 0) out.error = std::strerror(errno);
-    else if (S_ISDIR(st.st_mode)) out.error = "it is a directory";
-    else if (!S_ISREG(st.st_mode)) out.error = "it is not a regular file (a device, pipe or socket is not read)";
-    size = std::size_t(st.st_size);
-    return fd;
+    return done(openat(at, parts.back().c_str(), kReadFlags | O_NOFOLLOW));
+}
+
+int open_beneath(int dir, const fs::path& rel) {
+    if (!g_part_by_part.load(std::memory_order_relaxed)) {
+        open_how how{};
+        how.flags = std::uint64_t(kReadFlags);
+        how.resolve = RESOLVE_BENEATH | RESOLVE_NO_MAGICLINKS;
+        const long fd = syscall(SYS_openat2, dir, rel.c_str(), &how, sizeof how);
+        if (fd >= 0 || errno != ENOSYS) return int(fd);
+        g_part_by_part.store(true, std::memory_order_relaxed);  // an old kernel: the strict way from now on
+    }
+    return open_part_by_part(dir, rel);
 }
 
 }  // namespace
 
-FileContents read_file_start(const std::string& path, std::size_t max_bytes) {
-    FileContents out;
-    std::size_t size = 0;
-    const Fd fd = open_regular_file(path, out, size);
-    if (!out.error.empty()) return out;
-    out.bytes.resize(std::min(size, max_bytes));
-    std::size_t have = 0;
-    while (have < out.bytes.size()) {
-        const ssize_t n = read(fd.get(), out.bytes.data() + have, out.bytes.size() - have);
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) {
-            out.error = std::strerror(errno);
-            return out;
-        }
-        if (n == 0) break;
-        have += std::size_t(n);
+namespace read_file_testing {
+void force_part_by_part(bool on) { g_part_by_part.store(on); }
+}  // namespace read_file_testing
+
+Confinement::Confinement(const std::vector<std::string>& folders) {
+    for (const std::string& f : folders) {
+        Folder folder;
+        folder.spelled = normalised(f);
+        std::error_code ec;
+        folder.real = normalised(fs::weakly_canonical(folder.spelled, ec));
+        if (ec) folder.real = folder.spelled;
+        folder.fd = open(folder.spelled.c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC);
+        if (folder.fd >= 0) folders_.push_back(std::move(folder));
     }
-    out.bytes.resize(have);
-    return out;
+}
+
+Confinement::~Confinement() {
+    for (const Folder& f : folders_) close(f.fd);
+}
+
+int Confinement::open_inside(const std::string& path) const {
+    const fs::path p = normalised(path);
+    int inside_error = 0;  // an error about a file inside a folder (no permission, …) is told
+    for (const Folder& f : folders_)
+        for (const fs::path* base : {&f.spelled, &f.real}) {
+            const fs::path rel = below(p, *base);
+            if (rel.empty()) continue;
+            const int fd = open_beneath(f.fd, rel);
+            if (fd >= 0) return fd;
+            // Missing, or leading out (EXDEV: `..` or an absolute link; ELOOP: a link refused).
+            if (errno != ENOENT && errno != EXDEV && errno != ELOOP && errno != ENOTDIR && !inside_error)
+                inside_error = errno;
+        }
+    errno = inside_error ? inside_error : ENOENT;
+    return -1;
 }
 
 std::string describe_bytes(std::size_t bytes) {
@@ -76,19 +134,24 @@ std::string describe_bytes(std::size_t bytes) {
     return buf;
 }
 
-FileContents read_regular_file(const std::string& path, std::size_t max_bytes, const std::atomic<bool>* cancel) {
+FileContents read_regular_file(const std::string& path, std::size_t max_bytes, const std::atomic<bool>* cancel,
+                               const Confinement* inside) {
     FileContents out;
     auto stopped = [&] { return out.cancelled = cancel && cancel->load(std::memory_order_relaxed); };
-    const Fd fd(open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+    const Fd fd(inside ? inside->open_inside(path) : open(path.c_str(), kReadFlags));
     if (fd.get() < 0) {
+        out.missing = errno == ENOENT;
         out.error = std::strerror(errno);
         return out;
     }
+    // What was opened is what is checked and read.
     struct stat st {};
     if (fstat(fd.get(), &st) != 0) {
         out.error = std::strerror(errno);
         return out;
     }
+    out.device = std::uint64_t(st.st_dev);
+    out.inode = std::uint64_t(st.st_ino);
     if (S_ISDIR(st.st_mode)) {
         out.error = "it is a directory";
         return out;
@@ -127,6 +190,35 @@ FileContents read_regular_file(const std::string& path, std::size_t max_bytes, c
             out.error = "it grew past the limit of " + describe_bytes(max_bytes) + " while being read";
             return out;
         }
+    }
+    out.bytes.resize(have);
+    return out;
+}
+
+FileContents read_file_start(const std::string& path, std::size_t max_bytes) {
+    FileContents out;
+    const Fd fd(open(path.c_str(), kReadFlags));
+    if (fd.get() < 0) {
+        out.missing = errno == ENOENT;
+        out.error = std::strerror(errno);
+        return out;
+    }
+    struct stat st {};
+    if (fstat(fd.get(), &st) != 0) out.error = std::strerror(errno);
+    else if (S_ISDIR(st.st_mode)) out.error = "it is a directory";
+    else if (!S_ISREG(st.st_mode)) out.error = "it is not a regular file (a device, pipe or socket is not read)";
+    if (!out.error.empty()) return out;
+    out.bytes.resize(std::min(std::size_t(st.st_size), max_bytes));
+    std::size_t have = 0;
+    while (have < out.bytes.size()) {
+        const ssize_t n = read(fd.get(), out.bytes.data() + have, out.bytes.size() - have);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            out.error = std::strerror(errno);
+            return out;
+        }
+        if (n == 0) break;
+        have += std::size_t(n);
     }
     out.bytes.resize(have);
     return out;

@@ -17,6 +17,11 @@ namespace whitted {
 
 using TriangleIndices = std::array<std::uint32_t, 3>;
 
+// What a triangle costs at the peak of building its mesh's BVH, besides the mesh itself: the build's
+// boxes and nodes, then the BVH's nodes and blocks of four triangles kept (accel/mesh_bvh.h;
+// bench/RESULTS.md: 28 bytes a triangle kept). Rounded up: an estimate must not be low.
+constexpr std::size_t kMeshBvhBytesPerTriangle = 96;
+
 struct TriangleMesh {
     // One index per corner for all of a vertex's attributes (the OBJ reader makes a vertex per
     // distinct v/vt/vn of the file's corners, as pbrt and Embree keep meshes).

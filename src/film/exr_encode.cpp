@@ -1,5 +1,6 @@
 #include "film/exr_encode.h"
 
+#include <cerrno>
 #include <cstdint>
 #include <exception>
 
@@ -16,24 +17,32 @@ namespace {
 // OpenEXR's output stream over a C file (it seeks back to fill in the line offsets at the end).
 class FileStream : public Imf::OStream {
 public:
-    explicit FileStream(std::FILE* f) : Imf::OStream("whitted output"), f_(f) {}
+    FileStream(std::FILE* f, int& error) : Imf::OStream("whitted output"), f_(f), error_(error) {}
     void write(const char c[], int n) override {
-        if (std::fwrite(c, 1, std::size_t(n), f_) != std::size_t(n)) throw std::runtime_error("write failed");
+        if (std::fwrite(c, 1, std::size_t(n), f_) != std::size_t(n)) fail("write failed");
     }
     std::uint64_t tellp() override { return std::uint64_t(ftello(f_)); }
     void seekp(std::uint64_t pos) override {
-        if (fseeko(f_, off_t(pos), SEEK_SET) != 0) throw std::runtime_error("seek failed");
+        // (Seeking flushes the buffer: a full disk may show here first.)
+        if (fseeko(f_, off_t(pos), SEEK_SET) != 0) fail("seek failed");
     }
 
 private:
+    // The system's reason is kept before the exception is made (which may change errno).
+    [[noreturn]] void fail(const char* what) {
+        error_ = errno;
+        throw std::runtime_error(what);
+    }
     std::FILE* f_;
+    int& error_;
 };
 
 }  // namespace
 
-bool encode_exr(const LinearImage& image, std::FILE* file) {
+bool encode_exr(const LinearImage& image, std::FILE* file, int& error) {
+    error = 0;
     try {
-        FileStream stream(file);
+        FileStream stream(file, error);
         Imf::Header header(image.width, image.height);
         for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
         for (const auto& [key, value] : image.text) header.insert(key, Imf::StringAttribute(value));

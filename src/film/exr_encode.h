@@ -7,7 +7,8 @@
 
 namespace whitted {
 
-// Writes `image` to `file` from its current position; false if OpenEXR or the file failed.
-bool encode_exr(const LinearImage& image, std::FILE* file);
+// Writes `image` to `file` from its current position; false if OpenEXR or the file failed, with
+// `error` the file's errno (0: OpenEXR's own failure).
+bool encode_exr(const LinearImage& image, std::FILE* file, int& error);
 
 }  // namespace whitted

@@ -15,6 +15,7 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include "base/file_replace.h"
 #include "film/exr_encode.h"
 #include "film/png_encode.h"
 
@@ -121,11 +122,14 @@ bool encode_pfm(const LinearImage& image, FileSink& sink) {
 
 // Writes the encoded image to a temporary file beside `path` and renames it over `path` once every
 // byte is on the disk. encode(sink) returns false if the image could not be encoded.
+// Through a symbolic link the file it leads to is replaced (the link stays), keeping its permissions.
 template <class Encode>
 std::string write_atomically(const std::string& path, Encode&& encode) {
-    const std::string tmp = temporary_beside(path);
+    const ReplaceTarget target = replace_target(path);
+    const std::string tmp = temporary_beside(target.path);
     const WritingGuard guard(tmp);
     FileSink sink(tmp);
+    if (sink.ok) keep_permissions(fileno(sink.file), target);
     const bool encoded = sink.ok && encode(sink);
     const bool ok = sink.close() && encoded;
     const int error = sink.error;
@@ -134,7 +138,7 @@ std::string write_atomically(const std::string& path, Encode&& encode) {
         std::filesystem::remove(tmp, ec);
         return "cannot write '" + path + "': " + (error ? std::strerror(error) : "the image could not be encoded");
     }
-    std::filesystem::rename(tmp, path, ec);
+    std::filesystem::rename(tmp, target.path, ec);
     if (ec) {
         std::error_code ignored;
         std::filesystem::remove(tmp, ignored);
@@ -213,8 +217,17 @@ std::string write_linear_image(const LinearImage& image, const std::string& path
     }
     const bool exr = extension_of(path) == ".exr";
     return write_atomically(path, [&](FileSink& sink) {
-        return exr ? encode_exr(image, sink.file) && (std::fflush(sink.file) == 0 || (sink.ok = false, sink.error = errno, false))
-                   : encode_pfm(image, sink);
+        if (!exr) return encode_pfm(image, sink);
+        // A full disk says "No space left on device", not "the image could not be encoded".
+        int error = 0;
+        if (!encode_exr(image, sink.file, error)) {
+            sink.ok = false;
+            sink.error = error;
+        } else if (std::fflush(sink.file) != 0) {
+            sink.ok = false;
+            sink.error = errno;
+        }
+        return sink.ok;
     });
 }
 
@@ -232,8 +245,8 @@ std::string output_unwritable(const std::string& path) {
     const fs::path parent = fs::path(path).parent_path();
     if (!parent.empty() && !fs::is_directory(parent, ec))
         return head + "the folder '" + parent.string() + "' does not exist";
-    // What write_image will do first: create a file beside the target.
-    const std::string probe = temporary_beside(path);
+    // What write_image will do first: create a file beside the target (where a link leads).
+    const std::string probe = temporary_beside(replace_target(path).path);
     const int fd = open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0) return head + std::strerror(errno);
     close(fd);

@@ -135,21 +135,37 @@ Instance make_instance(const glm::dmat4& object_to_world, ShapeKind kind, std::u
         inst.world_to_object[r] = glm::vec4(float(inv[0][r]), float(inv[1][r]), float(inv[2][r]), float(inv[3][r]));
     inst.kind = kind;
     inst.material = material;
+    float largest = 0.0f;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) largest = std::max(largest, std::abs(inst.world_to_object[r][c]));
+    inst.rescale = largest < 0x1p-20f || largest > 0x1p20f;
     return inst;
 }
+
+namespace {
+
+// v / |v|: in float as always, in double where float's |v|² overflows or underflows (a camera 1e20
+// from what it looks at), so that the camera of every scene that worked before is the same bits.
+glm::vec3 unit(const glm::vec3& v) {
+    const glm::vec3 u = glm::normalize(v);
+    const float n = glm::dot(u, u);  // 0 or NaN where |v|² overflowed or underflowed
+    return n > 0.5f && n < 2.0f ? u : glm::vec3(glm::normalize(glm::dvec3(v)));
+}
+
+}  // namespace
 
 Camera make_camera(const CameraDesc& desc) {
     Camera cam;
     cam.eye = desc.eye;
-    cam.forward = glm::normalize(desc.view_direction());
-    cam.right = glm::normalize(glm::cross(cam.forward, desc.up));
+    cam.forward = unit(desc.view_direction());
+    cam.right = unit(glm::cross(cam.forward, desc.up));
     cam.up = glm::cross(cam.right, cam.forward);
     cam.tan_half_fov = std::tan(glm::radians(desc.angle_deg) * 0.5f);
     cam.lens_radius = 0.5f * desc.aperture;
     // The parser made sure a lens has something to focus on (§9.1).
-    cam.focal_distance = desc.focal_distance > 0.0f ? desc.focal_distance
-                         : desc.use_focus        ? glm::length(desc.focus - desc.eye)
-                                                 : 1.0f;
+    float focus = desc.use_focus ? glm::length(desc.focus - desc.eye) : 1.0f;
+    if (!std::isfinite(focus)) focus = float(glm::length(glm::dvec3(desc.focus) - glm::dvec3(desc.eye)));
+    cam.focal_distance = desc.focal_distance > 0.0f ? desc.focal_distance : focus;
     return cam;
 }
 
@@ -160,6 +176,17 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
     scene.ambient_intensity = desc.ambient_intensity;
     scene.lighting = desc.lighting;
     scene.camera = make_camera(desc.camera);
+    // The camera within the objects' range: beyond, its rays' arithmetic overflows (a camera at
+    // 3e38 saw nothing, silently).
+    const CameraDesc& c = desc.camera;
+    for (const auto& [what, where] : {std::pair{"eye", c.eye}, std::pair{"focus", c.use_focus ? c.focus : c.eye}})
+        if (!(std::max({std::abs(where.x), std::abs(where.y), std::abs(where.z)}) <= kMaxWorldCoordinate)) {
+            result.diagnostics.push_back(
+                {Severity::Error, c.loc,
+                 std::string("the camera's ") + what + " is more than 1e30 from the origin, beyond what float "
+                 "arithmetic can trace: scale or move the scene toward the origin"});
+            return result;
+        }
     Provenance& prov = scene.provenance;
     for (const LightDesc& l : desc.lights) {
         scene.lights.push_back(to_light(l));
@@ -259,16 +286,21 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
             }
         }
     }
-    unsigned checks = 0;
+    // The cancel flag is looked at every few thousand objects and steps, wherever they are: one
+    // subgraph may hold a million objects, or a million subgraphs one each.
+    std::size_t work = 0, next_look = 0;
+    auto stop = [&] {
+        if (work < next_look) return false;
+        next_look = work + 4096;
+        return result.cancelled = limits.cancel && limits.cancel->load(std::memory_order_relaxed);
+    };
     std::vector<Frame> stack{{desc.root, glm::dmat4(1.0), prov.add_link(Provenance::kNone, subgraph_site[desc.root])}};
     while (!stack.empty()) {
         Frame f = stack.back();
         stack.pop_back();
         result.steps += 1 + desc.subgraphs[f.subgraph].children.size();
-        if (limits.cancel && (++checks & 1023) == 0 && limits.cancel->load(std::memory_order_relaxed)) {
-            result.cancelled = true;
-            return result;
-        }
+        work += 1 + desc.subgraphs[f.subgraph].children.size();
+        if (stop()) return result;
         const std::vector<TransDesc>& children = desc.subgraphs[f.subgraph].children;
         for (std::size_t i = 0; i < children.size(); ++i) {
             const TransDesc& t = children[i];
@@ -289,6 +321,7 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
             for (const ObjectDesc& o : t.objects) {
                 scene.instances.push_back(make_instance(world, o.kind, material_index(o)));
                 prov.add_instance(link());
+                if (++work >= next_look && stop()) return result;
             }
             for (std::uint32_t r = 0; r < t.subgraphs.size(); ++r) {
                 // A subgraph that draws nothing is not entered: 41 levels of doubling over an

@@ -158,12 +158,12 @@ glm::vec3 clamped(const glm::vec3& c) { return {clamp01(c.x), clamp01(c.y), clam
 
 // The pixel as the renderer renders it: a one-pixel region of the same job (an adaptive pixel
 // still compares its centre with its neighbours': the renderer looks around its region).
-FilmPixel render_pixel(const Integrator& integrator, RenderJob job, int x, int y) {
+FilmPixel render_pixel(const Integrator& integrator, RenderJob job, int x, int y, const std::atomic<bool>* cancel) {
     job.region = PixelRegion{x, y, x + 1, y + 1};
     job.sample_begin = 0;
     job.sample_end = -1;
     job.threads = 1;
-    job.cancel = nullptr;
+    job.cancel = cancel;
     job.on_tile = nullptr;
     Film film(job.width, job.height, *job.region);
     render(integrator, job, film);
@@ -224,7 +224,7 @@ ObjectInfo describe_object(const Scene& scene, std::uint32_t instance) {
     return o;
 }
 
-PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y) {
+PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y, const std::atomic<bool>* cancel) {
     PixelReport r;
     r.x = x;
     r.y = y;
@@ -237,7 +237,9 @@ PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y
 
     const Camera camera = job.camera_for(scene);
     const auto integrator = make_integrator(scene, camera, job.integrator);
-    const FilmPixel pixel = render_pixel(*integrator, job, x, y);
+    auto cancelled = [&] { return r.cancelled = cancel && cancel->load(std::memory_order_relaxed); };
+    const FilmPixel pixel = render_pixel(*integrator, job, x, y, cancel);
+    if (cancelled()) return r;
     r.value = pixel.value();
     r.bytes = {to_byte(r.value.x), to_byte(r.value.y), to_byte(r.value.z)};
     r.samples = int(pixel.weight);
@@ -261,6 +263,7 @@ PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y
     float best = Scene::kInfinity;
     ShadingRecorder detail;
     for (int i = 0; i < n; ++i) {
+        if (cancelled()) return r;
         const SampleKey key{std::uint32_t(x), std::uint32_t(y), std::uint32_t(i)};
         const Ray ray = camera_sample_ray(camera, sampler, job.width, job.height, x, y, key.index);
         ShadingRecorder rec;

@@ -9,6 +9,7 @@
 // itself (a one-pixel region of the same job), and the parts are recorded by the Whitted
 // integrator's own shading code as it runs (integrator/shading_record.h), averaged over the
 // pixel's samples as the film averages them.
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -82,6 +83,7 @@ struct PixelReport {
     int max_depth = 0;
     SamplingSettings sampling;
     int samples = 0;  // the samples the film averaged for this pixel (adaptive: 1 or all)
+    bool cancelled = false;  // the job's cancel flag was set: the report is incomplete, not to be shown
 
     glm::vec3 value{0.0f};  // the film's value of the pixel (linear; the mean of its samples)
     glm::u8vec3 bytes{0};   // its 8-bit value
@@ -107,10 +109,12 @@ struct PixelReport {
 };
 
 // What the inspector needs to know about the render: the job the image was rendered with (its
-// size, camera, mode and depth, sampling). Its region, sample range, threads and callbacks are
-// ignored: the whole pixel is inspected.
+// size, camera, mode and depth, sampling). Its region, sample range, threads, cancel flag and
+// callbacks are ignored: the whole pixel is inspected, stopped only by `cancel` (looked at every
+// packet of samples as it is rendered and every sample as it is traced again).
 // Pixel (x, y): column x, row y, row 0 at the top; it must lie inside the job's image.
-PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y);
+PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y,
+                          const std::atomic<bool>* cancel = nullptr);
 
 // The object behind instance `instance` of the scene.
 ObjectInfo describe_object(const Scene& scene, std::uint32_t instance);

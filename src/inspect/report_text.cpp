@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "integrator/whitted_integrator.h"
+
 namespace whitted {
 namespace {
 
@@ -59,6 +61,10 @@ void write_secondary(std::ostream& out, const char* name, const SecondaryInfo& s
             return;
         case Outcome::TooWeak: out << "not traced: its weight " << paren(s.record.weight) << " is below 1/256\n"; return;
         case Outcome::OffSurface: out << "carries nothing: its glossy direction fell below the surface\n"; return;
+        case Outcome::RayLimit:
+            out << "not traced: the sample had traced its limit of " << kMaxSecondaryRays
+                << " reflected and refracted rays\n";
+            return;
         case Outcome::Traced: break;
     }
     if (s.next)

@@ -9,6 +9,10 @@ SecondaryRecord& ShadingRecorder::record(const Pending& p) {
 
 void ShadingRecorder::hit(const Ray& ray, const Hit& hit, const Surface& s, const glm::vec3& n, bool outside,
                           int depth) {
+    if (depth > kDeepestNode) {
+        open_.push_back(-1);
+        return;
+    }
     ShadeNode node;
     node.depth = depth;
     node.ray = ray;
@@ -18,7 +22,7 @@ void ShadingRecorder::hit(const Ray& ray, const Hit& hit, const Surface& s, cons
     node.outside = outside;
     nodes.push_back(std::move(node));
     const int index = int(nodes.size() - 1);
-    if (!pending_.empty()) record(pending_.back()).node = index;
+    if (!pending_.empty() && pending_.back().node >= 0) record(pending_.back()).node = index;
     open_.push_back(index);
 }
 
@@ -33,22 +37,25 @@ void ShadingRecorder::miss(const glm::vec3& bg) {
 void ShadingRecorder::secondary(SecondaryKind kind, SecondaryRecord::Outcome outcome, const Ray& ray,
                                 const glm::vec3& weight) {
     const Pending p{open_.back(), kind};
+    if (outcome == SecondaryRecord::Outcome::Traced) pending_.push_back(p);
+    if (p.node < 0) return;
     SecondaryRecord& r = record(p);
     r.outcome = outcome;
     r.ray = ray;
     r.weight = weight;
-    if (outcome == SecondaryRecord::Outcome::Traced) pending_.push_back(p);
 }
 
 void ShadingRecorder::secondary_color(const glm::vec3& color, const glm::vec3& contribution) {
-    SecondaryRecord& r = record(pending_.back());
-    r.color = color;
-    r.contribution = contribution;
+    if (pending_.back().node >= 0) {
+        SecondaryRecord& r = record(pending_.back());
+        r.color = color;
+        r.contribution = contribution;
+    }
     pending_.pop_back();
 }
 
 void ShadingRecorder::done(const glm::vec3& color) {
-    nodes[std::size_t(open_.back())].color = color;
+    if (open_.back() >= 0) nodes[std::size_t(open_.back())].color = color;
     open_.pop_back();
 }
 

@@ -35,6 +35,7 @@ struct SecondaryRecord {
         Traced,       // traced: `node` is its hit (-1: it left the scene, `color` is the background)
         TooWeak,      // its weight fell below 1/256 (scene-format.md §7): not traced
         OffSurface,   // a glossy direction drawn on the wrong side of the surface: carries nothing
+        RayLimit,     // the camera sample had traced kMaxSecondaryRays already: not traced
     };
     Outcome outcome = Outcome::NoRay;
     Ray ray{};
@@ -74,9 +75,13 @@ struct NoShadingRecorder {
     static constexpr bool kRecords = false;
 };
 
-// The recorder the inspector uses: one ShadeNode per hit, nodes[0] the camera ray's (if it hit).
+// The recorder the inspector uses: one ShadeNode per hit down to kDeepestNode, nodes[0] the camera
+// ray's (if it hit), with its lights (deeper hits' lights are not kept: the inspector reports the
+// camera ray's hit and where its own rays went, and a tree of thousands of hits with every light's
+// term each would take gigabytes).
 class ShadingRecorder {
 public:
+    static constexpr int kDeepestNode = 1;
     std::vector<ShadeNode> nodes;
     bool camera_ray_missed = false;
     glm::vec3 background{0.0f};  // the camera ray's colour when it missed
@@ -84,12 +89,19 @@ public:
     void hit(const Ray& ray, const Hit& hit, const Surface& s, const glm::vec3& n, bool outside, int depth);
     void miss(const glm::vec3& background);
     void base(const glm::vec3& emit, const glm::vec3& ambient) {
+        if (!recording()) return;
         open().emit = emit;
         open().ambient = ambient;
     }
-    void light(const LightTerm& term) { open().lights.push_back(term); }
-    void depth_limit() { open().depth_limit = true; }
-    void total_internal_reflection() { open().total_internal_reflection = true; }
+    void light(const LightTerm& term) {
+        if (recording() && open().depth == 0) open().lights.push_back(term);
+    }
+    void depth_limit() {
+        if (recording()) open().depth_limit = true;
+    }
+    void total_internal_reflection() {
+        if (recording()) open().total_internal_reflection = true;
+    }
     // A secondary ray of the open hit: traced next when outcome is Traced.
     void secondary(SecondaryKind kind, SecondaryRecord::Outcome outcome, const Ray& ray, const glm::vec3& weight);
     // What the secondary ray traced last brought back and added.
@@ -98,13 +110,14 @@ public:
     static constexpr bool kRecords = true;
 
 private:
-    std::vector<int> open_;  // the hits being shaded, innermost last
+    std::vector<int> open_;  // the hits being shaded, innermost last (-1: one too deep to keep)
     struct Pending {
         int node;  // whose ray
         SecondaryKind kind;
     };
     std::vector<Pending> pending_;  // secondary rays being traced, innermost last
     SecondaryRecord& record(const Pending& p);
+    bool recording() const { return open_.back() >= 0; }
     ShadeNode& open() { return nodes[std::size_t(open_.back())]; }
 };
 

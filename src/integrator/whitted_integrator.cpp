@@ -232,8 +232,10 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
         if (refract(dir, n, eta, refracted)) {
             glm::vec3 w = weight * m.transparent;
             glm::vec3 d;
+            bool limited = false;
             if (max_component(w) >= kMinWeight &&
-                secondary_direction(refracted, n, false, m.gloss, dimension::gloss_refract(depth), ctx, d)) {
+                secondary_direction(refracted, n, false, m.gloss, dimension::gloss_refract(depth), ctx, d) &&
+                !(limited = !ctx.take_ray())) {
                 ++counts.refracted;
                 rec.secondary(SecondaryKind::Refract, SecondaryRecord::Outcome::Traced, Ray{below, d}, w);
                 const glm::vec3 c = trace(Ray{below, d}, depth + 1, w, ctx, counts, rec);
@@ -241,8 +243,9 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
                 rec.secondary_color(c, m.transparent * c);
             } else if constexpr (Recorder::kRecords) {
                 rec.secondary(SecondaryKind::Refract,
-                              max_component(w) >= kMinWeight ? SecondaryRecord::Outcome::OffSurface
-                                                             : SecondaryRecord::Outcome::TooWeak,
+                              limited                        ? SecondaryRecord::Outcome::RayLimit
+                              : max_component(w) >= kMinWeight ? SecondaryRecord::Outcome::OffSurface
+                                                               : SecondaryRecord::Outcome::TooWeak,
                               Ray{below, refracted}, w);
             }
         } else {
@@ -253,9 +256,11 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
     if (max_component(reflect_weight) > 0.0f) {
         glm::vec3 w = weight * reflect_weight;
         glm::vec3 d;
+        bool limited = false;
         if (max_component(w) >= kMinWeight &&
             secondary_direction(dir - 2.0f * glm::dot(dir, n) * n, n, true, m.gloss, dimension::gloss_reflect(depth),
-                                ctx, d)) {
+                                ctx, d) &&
+            !(limited = !ctx.take_ray())) {
             ++counts.reflected;
             rec.secondary(SecondaryKind::Reflect, SecondaryRecord::Outcome::Traced, Ray{above, d}, w);
             const glm::vec3 c = trace(Ray{above, d}, depth + 1, w, ctx, counts, rec);
@@ -263,8 +268,9 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
             rec.secondary_color(c, reflect_weight * c);
         } else if constexpr (Recorder::kRecords) {
             rec.secondary(SecondaryKind::Reflect,
-                          max_component(w) >= kMinWeight ? SecondaryRecord::Outcome::OffSurface
-                                                         : SecondaryRecord::Outcome::TooWeak,
+                          limited                        ? SecondaryRecord::Outcome::RayLimit
+                          : max_component(w) >= kMinWeight ? SecondaryRecord::Outcome::OffSurface
+                                                           : SecondaryRecord::Outcome::TooWeak,
                           Ray{above, dir - 2.0f * glm::dot(dir, n) * n}, w);
         }
     }

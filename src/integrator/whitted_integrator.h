@@ -13,6 +13,13 @@
 
 namespace whitted {
 
+// The reflected and refracted rays one camera sample may trace: a full tree of depth 11. A mirror
+// and glass scene doubles its rays at each level (at --max-depth 38, a camera ray took minutes), so
+// past this, as past the depth limit, no further secondary ray of the sample is traced (depth
+// first: the refracted ray's subtree, then the reflected one's). Bounds the time a sample takes,
+// and so how soon a render stops when asked to.
+constexpr std::uint32_t kMaxSecondaryRays = 4094;
+
 class WhittedIntegrator final : public Integrator {
 public:
     WhittedIntegrator(const Scene& scene, const Camera& camera, int max_depth);
@@ -42,7 +49,10 @@ private:
     struct SampleContext {
         const Sampler& sampler;
         SampleKey key;
+        mutable std::uint32_t rays_left = kMaxSecondaryRays;  // of the sample's secondary rays
         glm::vec2 get2d(std::uint32_t dim) const { return sampler.get2d(key, dim); }
+        // Takes one of the sample's secondary rays, if any is left.
+        bool take_ray() const { return rays_left > 0 && (--rays_left, true); }
     };
     // What a packet's shadow rays found for each lane and light (the first kPacketLights lights).
     enum class ShadowQuery : unsigned char { Unknown, Lit, Blocked, Glass };

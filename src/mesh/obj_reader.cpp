@@ -1,116 +1,170 @@
 #include "mesh/obj_reader.h"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
-#include <cstring>
 #include <algorithm>
-#include <fstream>
-#include <iterator>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <istream>
 #include <limits>
-#include <sstream>
+#include <streambuf>
 #include <unordered_map>
 
 #include <tiny_obj_loader.h>
 
 #include "base/read_file.h"
+#include "mesh/polygon_split.h"
 
 namespace whitted {
 namespace {
 
-// Calls f(line number, first non-blank character, end of line) for every line of the text.
-template <class F>
-void for_each_line(const std::string& text, F&& f) {
-    int line = 0;
-    std::size_t pos = 0;
-    while (pos < text.size()) {
-        std::size_t end = text.find('\n', pos);
-        if (end == std::string::npos) end = text.size();
-        ++line;
-        const char* p = text.c_str() + pos;
-        const char* e = text.c_str() + end;
-        pos = end + 1;
-        while (p < e && (*p == ' ' || *p == '\t')) ++p;
-        if (!f(line, p, e)) return;
+// The text handed to tinyobjloader 64 KiB at a time: between pieces the cancel flag (and a reason
+// of our own to stop) is looked at, and where the parser is in the text is always known, for the
+// line of an error (its callbacks do not say).
+class TextBuffer : public std::streambuf {
+public:
+    TextBuffer(std::string_view text, const std::atomic<bool>* cancel, const bool& stop)
+        : begin_(const_cast<char*>(text.data())), end_(begin_ + text.size()), cancel_(cancel), stop_(stop) {
+        setg(begin_, begin_, begin_);
     }
+    std::size_t offset() const { return std::size_t(gptr() - begin_); }
+    bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
+
+protected:
+    int_type underflow() override {
+        if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
+        if (stop_ || cancelled() || egptr() == end_) return traits_type::eof();
+        constexpr std::ptrdiff_t kPiece = 64 << 10;
+        char* const at = egptr();
+        setg(at, at, at + std::min(kPiece, end_ - at));
+        return traits_type::to_int_type(*gptr());
+    }
+
+private:
+    char* begin_;
+    char* end_;
+    const std::atomic<bool>* cancel_;
+    const bool& stop_;
+};
+
+// The 1-based line of the text that ends at `offset` (just past its line break, as tinyobjloader
+// leaves the stream after a line; it ends lines at \n, \r\n and a lone \r alike).
+int line_ending_at(std::string_view text, std::size_t offset) {
+    int line = 0;
+    for (std::size_t i = 0; i < offset; ++i)
+        if (text[i] == '\n' || (text[i] == '\r' && (i + 1 >= text.size() || text[i + 1] != '\n'))) ++line;
+    if (offset == 0 || (text[offset - 1] != '\n' && text[offset - 1] != '\r')) ++line;  // the last line, unended
+    return line;
 }
 
-bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+constexpr const char* kNames[3] = {"vertex", "texture coordinate", "normal"};
 
-// Which of v (0), vt (1), vn (2) the line defines, or -1.
-int definition(const char* p, const char* e) {
-    if (e - p >= 2 && p[0] == 'v' && blank(p[1])) return 0;
-    if (e - p >= 3 && p[0] == 'v' && (p[1] == 't' || p[1] == 'n') && blank(p[2])) return p[1] == 't' ? 1 : 2;
-    return -1;
+// A corner of a face: indices into the file's v, vt and vn (0-based; -1 for vt, vn: none).
+struct Corner {
+    std::int32_t index[3];
+};
+
+// What the parse keeps of the file, filled by tinyobjloader's callbacks.
+struct Parse {
+    std::string_view text;
+    TextBuffer* buffer = nullptr;
+    std::vector<glm::vec3> v, vn;
+    std::vector<glm::vec2> vt;
+    std::vector<Corner> corners;
+    std::vector<std::uint32_t> face_size;
+    std::size_t used = 0, limit = 0;  // bytes
+    bool stop = false;                // a reason to stop reading (memory)
+    std::string error;                // the first bad face (the parse goes on: later definitions count)
+    std::size_t error_at = 0;         // its offset in the text
+    // Faces naming a definition further down (OBJ allows it): checked once the file is read.
+    struct Ahead {
+        std::size_t at;
+        std::int64_t index[3];  // the largest index of each kind named, 0-based
+    };
+    std::vector<Ahead> ahead;
+
+    std::size_t count(int kind) const { return kind == 0 ? v.size() : kind == 1 ? vt.size() : vn.size(); }
+    // What is held now (the vectors as allocated, not as filled), and `transient` more for a moment.
+    void spend(std::size_t transient = 0) {
+        used = text.size() + (v.capacity() + vn.capacity()) * sizeof(glm::vec3) + vt.capacity() * sizeof(glm::vec2) +
+               corners.capacity() * sizeof(Corner) + face_size.capacity() * sizeof(std::uint32_t) +
+               ahead.capacity() * sizeof(Ahead);
+        if (used + transient > limit) stop = true;
+    }
+    void bad_face(const std::string& why) {
+        if (!error.empty()) return;
+        error = why;
+        error_at = buffer->offset();
+    }
+};
+
+void on_vertex(void* p, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z, tinyobj::real_t) {
+    Parse& s = *static_cast<Parse*>(p);
+    s.v.emplace_back(x, y, z);
+    s.spend();
 }
 
-// tinyobjloader checks face indices only after the whole file, naming its last line, and reads
-// out of bounds when it triangulates a polygon with a bad index: so every face is checked here
-// first (OBJ indices are 1-based, positive ones against the whole file, negative ones count back
-// from the last definition above the face). Returns the first bad face line (0 if none) and why.
-int find_bad_face(const std::string& text, std::string& why) {
-    long total[3] = {0, 0, 0}, counts[3] = {0, 0, 0};  // v, vt, vn
-    const char* names[3] = {"vertex", "texture coordinate", "normal"};
-    for_each_line(text, [&](int, const char* p, const char* e) {
-        if (int k = definition(p, e); k >= 0) ++total[k];
-        return true;
-    });
-    int bad = 0;
-    for_each_line(text, [&](int line, const char* p, const char* e) {
-        if (int k = definition(p, e); k >= 0) {
-            ++counts[k];
-            return true;
-        }
-        if (!(e - p >= 2 && p[0] == 'f' && blank(p[1]))) return true;
-        p += 2;
-        while (p < e) {
-            while (p < e && blank(*p)) ++p;
-            if (p >= e) break;
-            for (int k = 0; k < 3 && p < e && !blank(*p); ++k) {
-                if (*p != '/') {
-                    errno = 0;
-                    char* after = nullptr;
-                    const long idx = std::strtol(p, &after, 10);
-                    if (after == p) {
-                        why = "expected a vertex index in the face, found '" + std::string(p, std::min<std::size_t>(e - p, 20)) + "'";
-                        bad = line;
-                        return false;
-                    }
-                    const long n = idx < 0 ? counts[k] : total[k];
-                    if (idx == 0 || errno == ERANGE || (idx > 0 && idx > n) || (idx < 0 && -idx > n)) {
-                        why = "face refers to " + std::string(names[k]) + " " + std::to_string(idx) + ", but the file " +
-                              (idx < 0 ? "defines " + std::to_string(n) + " before this line" : "has " + std::to_string(n)) +
-                              " (indices start at 1; negative ones count back)";
-                        bad = line;
-                        return false;
-                    }
-                    p = after;
+void on_normal(void* p, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z) {
+    Parse& s = *static_cast<Parse*>(p);
+    s.vn.emplace_back(x, y, z);
+    s.spend();
+}
+
+void on_texcoord(void* p, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t) {
+    Parse& s = *static_cast<Parse*>(p);
+    s.vt.emplace_back(x, y);
+    s.spend();
+}
+
+// A face: its raw OBJ indices (1-based; negative count back from the last definition so far; 0 is
+// none for vt and vn, and for v either a 0 or no number at all) made 0-based and checked.
+void on_face(void* p, tinyobj::index_t* raw, int n) {
+    Parse& s = *static_cast<Parse*>(p);
+    if (s.stop || !s.error.empty()) return;
+    // tinyobjloader holds the face too while this runs, and its line.
+    s.spend(std::size_t(n) * (sizeof(tinyobj::index_t) + sizeof(Corner)));
+    if (s.stop) return;
+    std::int64_t ahead[3] = {-1, -1, -1};
+    const std::size_t first = s.corners.size();
+    for (int c = 0; c < n; ++c) {
+        const int given[3] = {raw[c].vertex_index, raw[c].texcoord_index, raw[c].normal_index};
+        Corner corner{};
+        for (int k = 0; k < 3; ++k) {
+            const std::int64_t r = given[k], defined = std::int64_t(s.count(k));
+            std::int64_t i = -1;
+            if (r > 0) {
+                i = r - 1;
+                if (i >= defined) ahead[k] = std::max(ahead[k], i);
+            } else if (r < 0) {
+                i = defined + r;
+                if (i < 0) {
+                    s.bad_face("face refers to " + std::string(kNames[k]) + " " + std::to_string(r) +
+                               ", but the file defines " + std::to_string(defined) +
+                               " before this line (indices start at 1; negative ones count back)");
+                    break;
                 }
-                if (p < e && *p == '/') ++p;
+            } else if (k == 0) {
+                s.bad_face("a face has vertex index 0 or no number where a vertex index belongs (indices start "
+                           "at 1; negative ones count back)");
+                break;
             }
-            while (p < e && !blank(*p)) ++p;
+            corner.index[k] = std::int32_t(i);
         }
-        return true;
-    });
-    return bad;
-}
-
-// tinyobjloader's messages end in "(line N.)" where it knows the line.
-int line_in_message(const std::string& message) {
-    const std::size_t at = message.find("line ");
-    if (at == std::string::npos) return 0;
-    return std::atoi(message.c_str() + at + 5);
-}
-
-std::string first_line(std::string s) {
-    while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
-    const std::size_t nl = s.find('\n');
-    return nl == std::string::npos ? s : s.substr(0, nl);
+        if (!s.error.empty()) break;
+        s.corners.push_back(corner);
+    }
+    if (!s.error.empty() || n < 3) {  // a face of one or two corners draws nothing
+        s.corners.resize(first);
+        return;
+    }
+    s.face_size.push_back(std::uint32_t(n));
+    if (ahead[0] >= 0 || ahead[1] >= 0 || ahead[2] >= 0)
+        s.ahead.push_back({s.buffer->offset(), {ahead[0], ahead[1], ahead[2]}});
+    s.spend();
 }
 
 bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
-// A corner of the file: its v, vn and vt indices (kNoIndex for none).
+// A vertex of the mesh: a distinct (v, vn, vt) of the file's corners (kNoIndex for none).
 constexpr std::uint32_t kNoIndex = 0xffffffffu;
 struct CornerKey {
     std::uint32_t v, n, t;
@@ -124,79 +178,183 @@ struct CornerKeyHash {
         return std::size_t(h ^ (h >> 32));
     }
 };
+// What one entry of the corner map costs (a node of three indices and a vertex number, its hash,
+// the allocator's overhead, a bucket).
+constexpr std::size_t kBytesPerCornerEntry = 64;
 
-}  // namespace
+// Triangles with the same three positions in the same order as one kept before: the same triangle
+// to every ray (the same arithmetic gives the same hit, and of equal hits the first is taken), so
+// drawing it again only costs; a file of a million copies of one triangle made every ray that
+// met it test them all. An open-addressing table of triangle numbers, hashed by position bits.
+class SameTriangles {
+public:
+    explicit SameTriangles(std::size_t expected) {
+        std::size_t size = 16;
+        while (size < 2 * expected) size *= 2;
+        slots_.assign(size, kEmpty);
+    }
+    // True if a triangle of `mesh` has the corners p; else remembers that triangle `next` will.
+    bool repeats(const TriangleMesh& mesh, const glm::vec3* const (&p)[3], std::uint32_t next) {
+        if ((count_ + 1) * 2 > slots_.size()) grow(mesh);  // (before `next` is in the table: not in the mesh yet)
+        const std::size_t mask = slots_.size() - 1;
+        for (std::size_t i = hash(p) & mask;; i = (i + 1) & mask) {
+            if (slots_[i] == kEmpty) {
+                slots_[i] = next;
+                ++count_;
+                return false;
+            }
+            const TriangleIndices& t = mesh.triangles[slots_[i]];
+            if (same(mesh.positions[t[0]], *p[0]) && same(mesh.positions[t[1]], *p[1]) &&
+                same(mesh.positions[t[2]], *p[2]))
+                return true;
+        }
+    }
+    std::size_t bytes() const { return slots_.capacity() * sizeof(std::uint32_t); }
 
-ObjReadResult read_obj_text(const std::string& text, const std::string& name, TriangleMesh& mesh) {
+private:
+    static constexpr std::uint32_t kEmpty = 0xffffffffu;
+    static std::size_t hash(const glm::vec3* const (&p)[3]) {
+        std::uint64_t h = 0x84222325cbf29ce4ull;
+        for (const glm::vec3* c : p)
+            for (int a = 0; a < 3; ++a) {
+                std::uint32_t bits;
+                std::memcpy(&bits, &(*c)[a], sizeof bits);
+                h = (h ^ bits) * 0x100000001b3ull;
+            }
+        return std::size_t(h ^ (h >> 29));
+    }
+    static bool same(const glm::vec3& a, const glm::vec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+    void grow(const TriangleMesh& mesh) {
+        std::vector<std::uint32_t> old(slots_.size() * 2, kEmpty);
+        old.swap(slots_);
+        const std::size_t mask = slots_.size() - 1;
+        for (std::uint32_t t : old)
+            if (t != kEmpty) {
+                const TriangleIndices& c = mesh.triangles[t];
+                const glm::vec3* const p[3] = {&mesh.positions[c[0]], &mesh.positions[c[1]], &mesh.positions[c[2]]};
+                std::size_t i = hash(p) & mask;
+                while (slots_[i] != kEmpty) i = (i + 1) & mask;
+                slots_[i] = t;
+            }
+    }
+    std::vector<std::uint32_t> slots_;
+    std::size_t count_ = 0;
+};
+
+std::string memory_error(std::size_t limit) {
+    return "the mesh needs more than the " + describe_bytes(limit) +
+           " of memory left for it (--max-memory; a scene's objects, textures and meshes share it)";
+}
+
+// read_obj_text, which clears `mesh` whenever this fails.
+ObjReadResult read_obj_text_into(std::string_view text, const std::string& name, TriangleMesh& mesh,
+                                 const ObjLimits& limits) {
     ObjReadResult result;
-    std::string why;
-    if (int line = find_bad_face(text, why)) {
-        result.line = line;
-        result.error = why;
+    Parse s;
+    s.text = text;
+    s.limit = limits.max_bytes;
+    s.spend();  // the text is held while the rest is made
+    TextBuffer buffer(text, limits.cancel, s.stop);
+    s.buffer = &buffer;
+    if (s.used > s.limit) {
+        result.error = memory_error(limits.max_bytes);
         return result;
     }
-    tinyobj::attrib_t attrib;
-    std::vector<tinyobj::shape_t> shapes;
-    std::vector<tinyobj::material_t> materials;
-    std::string warn, err;
-    std::istringstream in(text);
+    std::istream in(&buffer);
+    tinyobj::callback_t callbacks;
+    callbacks.vertex_cb = on_vertex;
+    callbacks.normal_cb = on_normal;
+    callbacks.texcoord_cb = on_texcoord;
+    callbacks.index_cb = on_face;
     // No material reader: `mtllib` and `usemtl` are ignored (the scene's material applies).
-    const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, nullptr, true);
-    if (!ok || !err.empty()) {
-        result.line = line_in_message(err);
-        result.error = err.empty() ? "cannot parse the OBJ file" : first_line(err);
+    std::string warn, err;
+    tinyobj::LoadObjWithCallback(in, callbacks, &s, nullptr, &warn, &err);
+    if (buffer.cancelled()) {
+        result.cancelled = true;
         return result;
     }
+    if (s.stop) {
+        result.error = memory_error(limits.max_bytes);
+        return result;
+    }
+    // The first bad face of the file: one found as it was read, or one naming a definition
+    // further down that never came.
+    for (const Parse::Ahead& a : s.ahead) {
+        if (!s.error.empty() && a.at >= s.error_at) break;
+        int kind = 0;
+        while (kind < 3 && a.index[kind] < std::int64_t(s.count(kind))) ++kind;
+        if (kind == 3) continue;
+        s.error = "face refers to " + std::string(kNames[kind]) + " " + std::to_string(a.index[kind] + 1) +
+                  ", but the file has " + std::to_string(s.count(kind)) +
+                  " (indices start at 1; negative ones count back)";
+        s.error_at = a.at;
+        break;
+    }
+    if (!s.error.empty()) {
+        result.error = s.error;
+        result.line = line_ending_at(text, s.error_at);
+        return result;
+    }
+    std::vector<Parse::Ahead>().swap(s.ahead);
 
+    // The faces split into triangles, each corner made a vertex of the mesh: one per distinct
+    // (v, vn, vt) of the file's corners (split where a seam gives one position two uvs), so a
+    // triangle costs one index triple, as pbrt and Embree keep meshes. A corner without vn holds the
+    // normal (0, 0, 0), without vt the uv (NaN, NaN): its triangle then takes its geometric normal,
+    // or uv (0, 0), as §9.3 says.
     mesh = TriangleMesh();
     mesh.path = name;
-    const std::size_t nv = attrib.vertices.size() / 3, nn = attrib.normals.size() / 3, nt = attrib.texcoords.size() / 2;
-    auto position = [&](int i) {
-        return glm::vec3(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]);
-    };
-    const bool with_normals = nn > 0, with_uvs = nt > 0;
-    // One index per corner for position, normal and uv, as pbrt and Embree keep meshes: a vertex
-    // per distinct (v, vn, vt) of the file's corners (split where a seam gives one position two
-    // uvs), so a triangle costs one index triple, not three. A corner without a valid vn holds
-    // the normal (0, 0, 0), without a valid vt the uv (NaN, NaN): its triangle then takes its
-    // geometric normal, or uv (0, 0), as §9.3 says.
+    const bool with_normals = !s.vn.empty(), with_uvs = !s.vt.empty();
     std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> vertex_of;
-    vertex_of.reserve(nv);
-    auto vertex = [&](const tinyobj::index_t& c) {
-        const bool has_n = with_normals && c.normal_index >= 0 && std::size_t(c.normal_index) < nn;
-        const bool has_t = with_uvs && c.texcoord_index >= 0 && std::size_t(c.texcoord_index) < nt;
-        const CornerKey key{std::uint32_t(c.vertex_index), has_n ? std::uint32_t(c.normal_index) : kNoIndex,
-                            has_t ? std::uint32_t(c.texcoord_index) : kNoIndex};
+    vertex_of.reserve(std::min(s.v.size(), s.corners.size()));
+    auto vertex = [&](const Corner& c) {
+        const CornerKey key{std::uint32_t(c.index[0]), c.index[2] >= 0 ? std::uint32_t(c.index[2]) : kNoIndex,
+                            c.index[1] >= 0 ? std::uint32_t(c.index[1]) : kNoIndex};
         const auto [it, added] = vertex_of.try_emplace(key, std::uint32_t(mesh.positions.size()));
         if (!added) return it->second;
-        mesh.positions.push_back(position(c.vertex_index));
-        if (with_normals)
-            mesh.normals.push_back(has_n ? glm::vec3(attrib.normals[3 * key.n], attrib.normals[3 * key.n + 1],
-                                                     attrib.normals[3 * key.n + 2])
-                                         : glm::vec3(0.0f));
+        mesh.positions.push_back(s.v[key.v]);
+        if (with_normals) mesh.normals.push_back(key.n != kNoIndex ? s.vn[key.n] : glm::vec3(0.0f));
         if (with_uvs)
-            mesh.uvs.push_back(has_t ? glm::vec2(attrib.texcoords[2 * key.t], attrib.texcoords[2 * key.t + 1])
-                                     : glm::vec2(std::numeric_limits<float>::quiet_NaN()));
+            mesh.uvs.push_back(key.t != kNoIndex ? s.vt[key.t] : glm::vec2(std::numeric_limits<float>::quiet_NaN()));
         return it->second;
     };
-    for (const tinyobj::shape_t& shape : shapes) {
-        const std::vector<tinyobj::index_t>& idx = shape.mesh.indices;
-        std::size_t corner = 0;
-        for (unsigned char fv : shape.mesh.num_face_vertices) {
-            if (fv != 3 || corner + 3 > idx.size()) {  // triangulation leaves only triangles
-                corner += fv;
-                continue;
-            }
-            const tinyobj::index_t* c = &idx[corner];
-            corner += 3;
-            const glm::vec3 a = position(c[0].vertex_index), b = position(c[1].vertex_index),
-                            d = position(c[2].vertex_index);
-            const glm::vec3 n = glm::cross(b - a, d - a);
-            if (!finite(a) || !finite(b) || !finite(d) || !(glm::dot(n, n) > 0.0f)) {
+    SameTriangles seen(s.face_size.size());
+    std::vector<glm::vec3> polygon;
+    std::vector<std::array<std::uint32_t, 3>> split;
+    // Looked at every few thousand triangles: one face may be millions of them.
+    std::size_t next_look = 0;
+    auto stop = [&] {
+        next_look = mesh.triangles.size() + 16384;
+        if (buffer.cancelled()) return result.cancelled = true;
+        const std::size_t now = s.used + mesh.memory_bytes() + vertex_of.size() * kBytesPerCornerEntry +
+                                seen.bytes() + mesh.triangles.size() * kMeshBvhBytesPerTriangle;
+        if (now > limits.max_bytes) result.error = memory_error(limits.max_bytes);
+        return !result.error.empty();
+    };
+    std::size_t corner = 0;
+    for (std::size_t f = 0; f < s.face_size.size(); ++f) {
+        const std::uint32_t n = s.face_size[f];
+        const Corner* c = &s.corners[corner];
+        corner += n;
+        if ((f % 1024 == 0 || mesh.triangles.size() >= next_look) && stop()) return result;
+        polygon.resize(n);
+        for (std::uint32_t k = 0; k < n; ++k) polygon[k] = s.v[std::size_t(c[k].index[0])];
+        split.clear();
+        split_polygon(polygon.data(), n, split);
+        if (n > kEarClipCorners) ++result.fans;
+        for (const auto& tri : split) {
+            const glm::vec3* const p[3] = {&polygon[tri[0]], &polygon[tri[1]], &polygon[tri[2]]};
+            const glm::vec3 normal = glm::cross(*p[1] - *p[0], *p[2] - *p[0]);
+            if (!finite(*p[0]) || !finite(*p[1]) || !finite(*p[2]) || !(glm::dot(normal, normal) > 0.0f)) {
                 ++result.degenerate;
                 continue;
             }
-            mesh.triangles.push_back({vertex(c[0]), vertex(c[1]), vertex(c[2])});
+            if (seen.repeats(mesh, p, std::uint32_t(mesh.triangles.size()))) {
+                ++result.duplicates;
+                continue;
+            }
+            mesh.triangles.push_back({vertex(c[tri[0]]), vertex(c[tri[1]]), vertex(c[tri[2]])});
+            if (mesh.triangles.size() >= next_look && stop()) return result;
         }
     }
     if (mesh.triangles.empty()) {
@@ -209,19 +367,34 @@ ObjReadResult read_obj_text(const std::string& text, const std::string& name, Tr
     mesh.triangles.shrink_to_fit();
     mesh.normals.shrink_to_fit();
     mesh.uvs.shrink_to_fit();
+    result.bytes = mesh.memory_bytes() + mesh.triangles.size() * kMeshBvhBytesPerTriangle;
+    if (result.bytes > limits.max_bytes) {
+        mesh = TriangleMesh();
+        result.error = memory_error(limits.max_bytes);
+        return result;
+    }
     result.ok = true;
     return result;
 }
 
-ObjReadResult read_obj(const std::string& path, TriangleMesh& mesh, std::size_t max_bytes) {
-    FileContents file = read_regular_file(path, max_bytes);
+}  // namespace
+
+ObjReadResult read_obj_text(std::string_view text, const std::string& name, TriangleMesh& mesh,
+                            const ObjLimits& limits) {
+    ObjReadResult result = read_obj_text_into(text, name, mesh, limits);
+    if (!result.ok) mesh = TriangleMesh();  // nothing half-made is left
+    return result;
+}
+
+ObjReadResult read_obj(const std::string& path, TriangleMesh& mesh, const ObjLimits& limits) {
+    FileContents file = read_regular_file(path, limits.max_file_bytes, limits.cancel);
     if (!file.ok()) {
         ObjReadResult r;
-        r.error = "cannot read '" + path + "': " + file.error;
+        r.cancelled = file.cancelled;
+        if (!file.cancelled) r.error = "cannot read '" + path + "': " + file.error;
         return r;
     }
-    const std::string& text = file.bytes;
-    return read_obj_text(text, path, mesh);
+    return read_obj_text(file.bytes, path, mesh, limits);
 }
 
 }  // namespace whitted

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 
 #include "base/read_file.h"
 #include "cs1230/detect.h"
@@ -43,9 +44,10 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
 
     t = Clock::now();
     TextureOptions textures = options.textures;
+    textures.cancel = options.cancel;
     const std::size_t for_objects = flat.scene.instances.size() * kBytesPerInstance;
-    textures.limits.max_total_bytes =
-        std::min(textures.limits.max_total_bytes, options.max_memory - std::min(options.max_memory, for_objects));
+    std::size_t left = options.max_memory - std::min(options.max_memory, for_objects);
+    textures.limits.max_total_bytes = std::min(textures.limits.max_total_bytes, left);
     // Next to the scene file, or for a CSCI 1230 file in the parent of its folder (§9.5).
     const std::string& assets = parsed.scene.assets_from();
     const bool drawn_without_textures =
@@ -55,11 +57,20 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
                                                  &result.texture_paths);
     result.stats.texture_seconds = since(t);
     if (has_errors(result.diagnostics) || cancelled()) return result;
-    // Meshes (§9.3) are looked up where textures are, and confined with them (--untrusted).
-    if (!load_meshes(flat, assets, options.textures.search_dirs, result.diagnostics, options.textures.confined,
-                     options.textures.limits.max_file_bytes) ||
-        cancelled())
-        return result;
+    for (const TextureImage& image : flat.scene.textures) left -= std::min(left, image.rgb.size());
+    // Meshes (§9.3) are looked up where textures are, through the same door, in what memory is left.
+    MeshOptions meshes;
+    meshes.search_dirs = options.textures.search_dirs;
+    meshes.confined = options.textures.confined;
+    meshes.max_file_bytes = options.max_mesh_file_bytes;
+    meshes.max_bytes = left;
+    meshes.cancel = options.cancel;
+    meshes.preread = options.preread_meshes;
+    meshes.keep_files = options.textures.keep_files;
+    const MeshLoadResult mesh_load = load_meshes(flat, assets, meshes, result.diagnostics, &result.mesh_files);
+    result.mesh_paths = mesh_load.paths;
+    if (mesh_load.cancelled || cancelled()) return result.cancelled = true, result;
+    if (!mesh_load.ok) return result;
 
     std::vector<SourceLoc> sources;
     for (const ObjectDesc* o : flat.material_sources) sources.push_back(o->loc);
@@ -70,7 +81,7 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     result.stats.objects = flat.scene.instances.size();
     result.stats.lights = flat.scene.lights.size();
     result.stats.textures = flat.scene.textures.size();
-    auto scene = std::make_shared<const Scene>(accelerate(std::move(flat.scene), options.threads));
+    auto scene = std::make_shared<const Scene>(accelerate(std::move(flat.scene), options.threads, options.cancel));
     result.stats.build_seconds = since(t);
     if (!cancelled()) result.scene = std::move(scene);
     return result;
@@ -91,17 +102,23 @@ LoadResult load_scene(const std::string& path, const LoadOptions& options) {
     parse_options.time = options.time;
     parse_options.max_file_bytes = options.max_file_bytes;
     parse_options.cancel = options.cancel;
-    // A CSCI 1230 JSON file (§9.5) goes to its own reader, everything else to the format's parser.
     ParseResult parsed;
-    if (cs1230::is_json_scene_file(path)) {
-        FileContents file = read_regular_file(path, options.max_file_bytes, options.cancel);
-        if (file.cancelled) parsed.cancelled = true;
-        else if (!file.ok()) {
-            parsed.diagnostics.push_back({Severity::Error, SourceLoc{path, 0, 0}, "cannot read scene file: " + file.error});
-            parsed.unreadable = true;
-        } else {
-            parsed = cs1230::read_scene(file.bytes, path, {.lenient = options.lenient});
+    // A CSCI 1230 JSON file (§9.5) goes to its own reader, everything else to the format's parser.
+    const bool json = cs1230::is_json_scene_file(path);
+    if (json || options.textures.confined) {
+        // A file from others may be a link out of its folder (to a secret whose words the parser's
+        // errors would print): it is opened as the textures are, beneath its folder.
+        FileContents file = read_scene_file(path, options);
+        if (!file.ok() && !file.cancelled) {
+            LoadResult result;
+            result.unreadable = true;
+            result.diagnostics.push_back({Severity::Error, SourceLoc{path, 0, 0}, "cannot read scene file: " + file.error});
+            return result;
         }
+        parsed.cancelled = file.cancelled;
+        if (!file.cancelled)
+            parsed = json ? cs1230::read_scene(file.bytes, path, {.lenient = options.lenient})
+                          : parse_scene_text(file.bytes, path, parse_options);
     } else {
         parsed = parse_scene_file(path, parse_options);
     }
@@ -113,11 +130,21 @@ LoadResult load_scene(const std::string& path, const LoadOptions& options) {
     return finish(std::move(parsed), options, since(t));
 }
 
+FileContents read_scene_file(const std::string& path, const LoadOptions& options) {
+    if (!options.textures.confined) return read_regular_file(path, options.max_file_bytes, options.cancel);
+    std::error_code ec;
+    const Confinement folder({std::filesystem::absolute(path, ec).parent_path().string()});
+    FileContents file = read_regular_file(path, options.max_file_bytes, options.cancel, &folder);
+    if (file.missing) file.error = "not found inside its folder (--untrusted follows no link out of it)";
+    return file;
+}
+
 LoadResult load_scene_text(const std::string& text, const std::string& path, const LoadOptions& options) {
     auto t = Clock::now();
     ParseOptions parse_options;
     parse_options.lenient = options.lenient;
     parse_options.time = options.time;
+    parse_options.max_file_bytes = options.max_file_bytes;
     parse_options.cancel = options.cancel;
     ParseResult parsed = cs1230::is_json_scene(path, text)
                              ? cs1230::read_scene(text, path, {.lenient = options.lenient})

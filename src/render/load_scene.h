@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "base/read_file.h"
 #include "cs1230/stage.h"
 #include "parse/parser.h"
 #include "render/sampled_effects.h"
@@ -23,14 +24,19 @@ struct LoadOptions {
     int threads = 0;  // for building the BVH; 0 = all hardware threads
     TextureOptions textures;
     std::size_t max_file_bytes = ParseOptions{}.max_file_bytes;  // the scene file's size limit
+    std::size_t max_mesh_file_bytes = std::size_t(256) << 20;     // each OBJ file's (§9.3)
+    // Mesh files another process already read (an MPI job's ranks get rank 0's), by name as
+    // written; with textures.keep_files, the bytes of each mesh file read go to LoadResult::mesh_files.
+    const TextureFiles* preread_meshes = nullptr;
     FlattenLimits limits;  // objects drawn and steps of the instancing walk (limits.cancel is set from `cancel`)
-    // The memory the scene may need: its objects (estimated from the counts before any is made)
-    // and its textures together. Sets limits.max_bytes and what is left for textures.
+    // The memory the scene may need: its objects (estimated from the counts before any is made),
+    // its textures and its meshes together. Sets limits.max_bytes and what is left for the files.
     std::size_t max_memory = default_max_memory();
     // A CSCI 1230 file drawn as the course's Intersect stage (§9.5) draws no texture: its
     // textures are not read (one that is missing is then no error).
     cs1230::Stage cs1230_stage = cs1230::Stage::Illuminate;
-    // Set by another thread (or a signal handler) to give up; checked between the load's stages.
+    // Set by another thread (or a signal handler) to give up: every stage but the parse looks at it
+    // within a fraction of a second (the parse: between the file's pieces as it is read).
     const std::atomic<bool>* cancel = nullptr;
 };
 
@@ -48,8 +54,10 @@ struct LoadResult {
     std::vector<MissingTexture> missing_textures;  // also reported in diagnostics
     std::vector<Diagnostic> path_warnings;   // warnings that hold only in --mode path (§9.2)
     TextureFiles texture_files;  // with LoadOptions::textures.keep_files: the bytes of each texture file
+    TextureFiles mesh_files;     // and of each mesh file
     LoadStats stats;
     std::vector<std::string> texture_paths;  // the files the textures were read from (a viewer watches them)
+    std::vector<std::string> mesh_paths;     // and the meshes
     CameraDesc camera;  // the file's camera as written (eye, focus, up, angle): where the viewer's navigation starts
     bool cancelled = false;   // LoadOptions::cancel was set: no scene, no error
     bool unreadable = false;  // the scene file could not be read (an I/O failure, not a bad scene)
@@ -57,6 +65,10 @@ struct LoadResult {
 };
 
 LoadResult load_scene(const std::string& path, const LoadOptions& options = {});
+
+// Reads the scene file as load_scene does (base/read_file.h: a regular file within
+// max_file_bytes; with textures.confined, only from inside its folder: a link out of it is refused).
+FileContents read_scene_file(const std::string& path, const LoadOptions& options);
 
 // The same from text already in memory; `path` names it in messages and anchors texture lookup.
 LoadResult load_scene_text(const std::string& text, const std::string& path, const LoadOptions& options = {});

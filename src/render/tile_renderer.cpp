@@ -61,7 +61,7 @@ bool TileRenderer::render(const Tile& t, Film& film) {
         if (s1_ - s0_ == 1 && !job_.active) {
             for (int y = t.y0; y < t.y1; ++y) {
                 if (stop_requested()) return false;
-                if ((y - t.y0) % kPacketHeight == 0) trace_band(sampler_, t, y, std::uint32_t(s0_));
+                if ((y - t.y0) % kPacketHeight == 0 && !trace_band(sampler_, t, y, std::uint32_t(s0_))) return false;
                 for (int x = t.x0; x < t.x1; ++x) film.add(x, y, displayed(band_at(t, x, y)));
             }
             return true;
@@ -71,7 +71,7 @@ bool TileRenderer::render(const Tile& t, Film& film) {
             int n = 0;
             for (int x = t.x0; x < t.x1; ++x)
                 if (!job_.active || active(x, y)) xs_[std::size_t(n++)] = x;
-            add_samples(y, n, s0_, s1_, film);
+            if (!add_samples(y, n, s0_, s1_, film)) return false;
         }
         return true;
     }
@@ -82,7 +82,7 @@ bool TileRenderer::render(const Tile& t, Film& film) {
                      std::min(job_.height, t.y1 + 1)};
     for (int y = apron.y0; y < apron.y1; ++y) {
         if (stop_requested()) return false;
-        if ((y - apron.y0) % kPacketHeight == 0) trace_band(centre_sampler_, apron, y, 0);
+        if ((y - apron.y0) % kPacketHeight == 0 && !trace_band(centre_sampler_, apron, y, 0)) return false;
         for (int x = apron.x0; x < apron.x1; ++x) centre_at(apron, x, y) = clamped(band_at(apron, x, y));
     }
     for (int y = t.y0; y < t.y1; ++y) {
@@ -92,14 +92,16 @@ bool TileRenderer::render(const Tile& t, Film& film) {
             if (differs(apron, x, y)) xs_[std::size_t(n++)] = x;
             else film.add(x, y, centre_at(apron, x, y));
         }
-        add_samples(y, n, s0_, s1_, film);
+        if (!add_samples(y, n, s0_, s1_, film)) return false;
     }
     return true;
 }
 
-void TileRenderer::trace_band(const Sampler& sampler, const Tile& region, int y0, std::uint32_t index) {
+bool TileRenderer::trace_band(const Sampler& sampler, const Tile& region, int y0, std::uint32_t index) {
     band_y0_ = y0;
     for (int x0 = region.x0; x0 < region.x1; x0 += kPacketWidth) {
+        // A packet can take long (a deep mirror-and-glass tree is up to kMaxSecondaryRays a sample).
+        if (stop_requested()) return false;
         // Packets cut by the region's edges leave their outside lanes off.
         CameraBatch batch;
         for (int l = 0; l < kPacketSize; ++l) {
@@ -114,6 +116,7 @@ void TileRenderer::trace_band(const Sampler& sampler, const Tile& region, int y0
         for (int l = 0; l < kPacketSize; ++l)
             if ((batch.active >> l) & 1) band_at(region, x0 + l % kPacketWidth, y0 + l / kPacketWidth) = colors[l];
     }
+    return true;
 }
 
 glm::vec3& TileRenderer::band_at(const Tile& region, int x, int y) {
@@ -122,13 +125,17 @@ glm::vec3& TileRenderer::band_at(const Tile& region, int x, int y) {
 
 // The samples of the listed pixels, pixel after pixel and sample after sample within each, are
 // cut into packets in that order, so a packet covers neighbouring samples whatever their count.
-void TileRenderer::add_samples(int y, int n, int s0, int s1, Film& film) {
-    const int per_pixel = s1 - s0, total = n * per_pixel;
-    for (int k0 = 0; k0 < total; k0 += kPacketSize) {
-        const int lanes = std::min(kPacketSize, total - k0);
+bool TileRenderer::add_samples(int y, int n, int s0, int s1, Film& film) {
+    // (64 bits: a row of 1024 pixels of 16.7 million samples each has more samples than an int holds.)
+    const std::int64_t per_pixel = s1 - s0, total = n * per_pixel;
+    for (std::int64_t k0 = 0; k0 < total; k0 += kPacketSize) {
+        // One pixel may have a million samples (--spp 65536 --aa 16): looked at every packet.
+        if (stop_requested()) return false;
+        const int lanes = int(std::min<std::int64_t>(kPacketSize, total - k0));
         CameraBatch batch;
         for (int l = 0; l < lanes; ++l) {
-            const int k = k0 + l, x = xs_[std::size_t(k / per_pixel)];
+            const std::int64_t k = k0 + l;
+            const int x = xs_[std::size_t(k / per_pixel)];
             const std::uint32_t index = std::uint32_t(s0 + k % per_pixel);
             batch.rays[l] = camera_ray(sampler_, x, y, index);
             batch.keys[l] = {std::uint32_t(x), std::uint32_t(y), index};
@@ -138,6 +145,7 @@ void TileRenderer::add_samples(int y, int n, int s0, int s1, Film& film) {
         integrator_.radiance(batch, sampler_, colors, counts_);
         for (int l = 0; l < lanes; ++l) film.add(xs_[std::size_t((k0 + l) / per_pixel)], y, displayed(colors[l]));
     }
+    return true;
 }
 
 glm::vec3& TileRenderer::centre_at(const Tile& apron, int x, int y) {

@@ -31,7 +31,7 @@ public:
     TileRenderer(const Integrator& integrator, const RenderJob& job);
 
     // Adds the job's samples of the pixels of tile t to `film`. Checks the job's cancel flag
-    // before every row; returns false (the tile left unfinished) once it is set.
+    // before every packet of samples; returns false (the tile left unfinished) once it is set.
     bool render(const Tile& t, Film& film);
 
     const RayCounts& counts() const { return counts_; }
@@ -45,10 +45,10 @@ private:
     Ray camera_ray(const Sampler& sampler, int x, int y, std::uint32_t index) const;
     // The colours of sample `index` of rows [y0, y0 + kPacketHeight) of `region`, from `sampler`,
     // into band_.
-    void trace_band(const Sampler& sampler, const Tile& region, int y0, std::uint32_t index);
+    bool trace_band(const Sampler& sampler, const Tile& region, int y0, std::uint32_t index);
     glm::vec3& band_at(const Tile& region, int x, int y);
-    // Adds samples [s0, s1) of pixels xs_[0 .. n) of row y to the film.
-    void add_samples(int y, int n, int s0, int s1, Film& film);
+    // Adds samples [s0, s1) of pixels xs_[0 .. n) of row y to the film (false: cancelled part-way).
+    bool add_samples(int y, int n, int s0, int s1, Film& film);
     // The job's active-pixel mask: whether pixel (x, y) takes samples.
     bool active(int x, int y) const;
     // Adaptive: true when pixel (x, y)'s centre colour differs from a neighbour's in `apron`.

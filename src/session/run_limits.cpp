@@ -36,6 +36,15 @@ std::size_t image_memory(int width, int height, const std::string& output, const
     return std::size_t(width) * std::size_t(height) * per_pixel;
 }
 
+std::string why_no_partial_image(int tiles_done, int width, int height) {
+    if (tiles_done <= 0) return "no tile was rendered";
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    if (pixels > kMaxPartialImagePixels)
+        return "a partial image of " + std::to_string(pixels / 1'000'000) + " megapixels is not written (more than " +
+               std::to_string(kMaxPartialImagePixels / 1'000'000) + " megapixels take long to write)";
+    return "";
+}
+
 void apply_untrusted(LoadOptions& options) {
     using L = UntrustedLimits;
     options.max_file_bytes = std::min(options.max_file_bytes, L::kSceneFileBytes);
@@ -45,7 +54,8 @@ void apply_untrusted(LoadOptions& options) {
     t.max_file_bytes = std::min(t.max_file_bytes, L::kTextureFileBytes);
     t.max_side = std::min(t.max_side, L::kTextureSide);
     t.max_texels = std::min(t.max_texels, L::kTextureTexels);
-    options.textures.confined = true;
+    options.textures.confined = true;  // textures, meshes and the scene file itself
+    options.max_mesh_file_bytes = std::min(options.max_mesh_file_bytes, L::kMeshFileBytes);
 }
 
 }  // namespace whitted

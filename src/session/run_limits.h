@@ -23,12 +23,22 @@ struct UntrustedLimits {
     static constexpr std::size_t kObjects = 1'000'000;
     static constexpr std::size_t kSteps = 10'000'000;
     static constexpr std::size_t kTextureFileBytes = std::size_t(32) << 20;
+    static constexpr std::size_t kMeshFileBytes = std::size_t(32) << 20;
     static constexpr int kTextureSide = 4096;
     static constexpr std::size_t kTextureTexels = std::size_t(1) << 24;
     static constexpr std::size_t kMemory = std::size_t(1) << 30;  // unless --max-memory says otherwise
     static constexpr double kSeconds = 60;                        // unless --timeout says otherwise
     static constexpr int kImageSide = 8192;
 };
+
+// An interrupted render's part is written beside the output (NAME.partial.EXT) only if a tile of
+// it was rendered and it is at most this many pixels: a bigger one could take longer to convert
+// and encode than an interrupt should wait (a 715-megapixel PNG: tens of seconds).
+constexpr std::size_t kMaxPartialImagePixels = 64'000'000;  // 8000 × 8000
+
+// Why the part of an interrupted width × height render with `tiles_done` tiles is not written
+// ("no tile was rendered", "…megapixels…"), or "" when it is.
+std::string why_no_partial_image(int tiles_done, int width, int height);
 
 // Applies UntrustedLimits to a load (textures confined to the scene's folder and --texture-path).
 void apply_untrusted(LoadOptions& options);

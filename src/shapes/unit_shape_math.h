@@ -194,6 +194,22 @@ inline Span<T> intersect(ShapeKind kind, const Vec3<T>& o, const Vec3<T>& d) {
     return {};
 }
 
+// intersect() with the direction first scaled by a power of two to a largest component in
+// [0.5, 1), the distances found scaled back. Every intermediate of the shapes' arithmetic then
+// scales by the same power of two, so the distances are bit for bit those of intersect() wherever
+// its arithmetic stayed in float's normal range; beyond (an object scaled by 1e23: a unit ray's
+// object-space direction 1e-23, its square 0) they are still found.
+template <class T>
+inline Span<T> intersect_rescaled(ShapeKind kind, const Vec3<T>& o, const Vec3<T>& d) {
+    const T m = std::max(std::max(std::abs(d.x), std::abs(d.y)), std::abs(d.z));
+    if (!(m > T(0)) || !std::isfinite(m)) return intersect(kind, o, d);
+    int e = 0;
+    std::frexp(m, &e);
+    Span<T> s = intersect(kind, o, d * std::ldexp(T(1), -e));
+    for (int i = 0; i < s.count; ++i) s.t[i] = std::ldexp(s.t[i], -e);
+    return s;
+}
+
 template <class T>
 inline Vec3<T> normal(ShapeKind kind, ShapePart part, const Vec3<T>& p) {
     switch (part) {

@@ -9,7 +9,7 @@
 namespace whitted {
 
 ShapeSpan intersect_unit_shape(ShapeKind kind, const Ray& object_ray) {
-    const auto s = shape_math::intersect<float>(kind, object_ray.origin, object_ray.direction);
+    const auto s = shape_math::intersect_rescaled<float>(kind, object_ray.origin, object_ray.direction);
     ShapeSpan out;
     out.count = s.count;
     out.t[0] = s.t[0]; out.t[1] = s.t[1];

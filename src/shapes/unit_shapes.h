@@ -30,6 +30,7 @@ struct ShapeSpan {
     ShapePart part[2] = {kPartSide, kPartSide};
 };
 
+// Any direction length (shape_math::intersect_rescaled): the reference the BVH walks are checked against.
 ShapeSpan intersect_unit_shape(ShapeKind kind, const Ray& object_ray);
 
 // The nearest hit with t in (t_min, t_max); returns false if none.

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <unordered_map>
+
+#include <unistd.h>
 
 #include "base/read_file.h"
 #include "texture/texture_decode.h"
@@ -11,27 +14,14 @@ namespace whitted {
 namespace fs = std::filesystem;
 namespace {
 
-// Reads (a regular file, no bigger than the limit, its size checked before a byte is read) and
-// decodes within what is left of the scene's texture memory; `bytes` keeps what was read.
-bool read_and_decode(const std::string& path, const TextureLimits& limits, TextureImage& out, std::string& bytes,
-                     std::string& reason) {
-    FileContents file = read_regular_file(path, limits.max_file_bytes);
-    if (!file.ok()) {
-        reason = "cannot read '" + path + "': " + file.error;
-        return false;
-    }
-    bytes = std::move(file.bytes);
+// Decodes within what is left of the scene's texture memory.
+bool decode(const std::string& path, const std::string& bytes, const TextureLimits& limits, TextureImage& out,
+            std::string& reason) {
     if (std::string why = decode_texture(bytes, limits, out); !why.empty()) {
         reason = "cannot decode '" + path + "': " + why;
         return false;
     }
     return true;
-}
-
-// True when `path` (canonical) is `root` (canonical) or inside it.
-bool is_inside(const fs::path& path, const fs::path& root) {
-    auto [r, p] = std::mismatch(root.begin(), root.end(), path.begin(), path.end());
-    return r == root.end() || (std::next(r) == root.end() && r->empty());  // "dir/" ends in an empty part
 }
 
 std::string tried_list(const std::vector<std::string>& tried) {
@@ -41,22 +31,6 @@ std::string tried_list(const std::vector<std::string>& tried) {
 }
 
 }  // namespace
-
-ConfinedFolders::ConfinedFolders(const std::string& scene_path, const std::vector<std::string>& search_dirs) {
-    std::error_code ec;
-    roots_.push_back(fs::weakly_canonical(fs::absolute(fs::path(scene_path), ec).parent_path(), ec));
-    for (std::string d : search_dirs) {
-        std::replace(d.begin(), d.end(), '\\', '/');
-        roots_.push_back(fs::weakly_canonical(fs::absolute(fs::path(d), ec), ec));
-    }
-}
-
-bool ConfinedFolders::contains(const std::string& candidate) const {
-    std::error_code ec;
-    const fs::path real = fs::weakly_canonical(candidate, ec);
-    if (ec) return false;
-    return std::any_of(roots_.begin(), roots_.end(), [&](const fs::path& r) { return is_inside(real, r); });
-}
 
 TextureImage checker_texture() {
     // 8 × 8 squares of 8 × 8 texels each: bilinear filtering only softens the square edges, so
@@ -69,6 +43,16 @@ TextureImage checker_texture() {
         for (int x = 0; x < kSize; ++x)
             img.push_back(((x / kTexelsPerSquare + y / kTexelsPerSquare) & 1) ? glm::u8vec3(0) : glm::u8vec3(255, 0, 255));
     return img;
+}
+
+std::vector<std::string> confinement_folders(const std::string& scene_path, const std::vector<std::string>& search_dirs) {
+    std::error_code ec;
+    std::vector<std::string> folders{fs::absolute(fs::path(scene_path), ec).parent_path().string()};
+    for (std::string d : search_dirs) {
+        std::replace(d.begin(), d.end(), '\\', '/');
+        folders.push_back(d);
+    }
+    return folders;
 }
 
 std::vector<std::string> texture_candidates(const std::string& name, const std::string& scene_path,
@@ -110,7 +94,8 @@ bool is_windows_path(const std::string& name) {
 }
 
 std::vector<std::string> loose_texture_candidates(const std::string& name, const std::string& scene_path,
-                                                  const std::vector<std::string>& search_dirs) {
+                                                  const std::vector<std::string>& search_dirs,
+                                                  const Confinement* inside) {
     std::string portable = name;
     std::replace(portable.begin(), portable.end(), '\\', '/');
     std::vector<std::string> parts;
@@ -139,7 +124,13 @@ std::vector<std::string> loose_texture_candidates(const std::string& name, const
             fs::path other = p;
             other.replace_extension(ext);
             std::error_code ec;
-            if (other != p && fs::is_regular_file(other, ec)) add(other.string());
+            if (other == p) continue;
+            if (inside) {
+                const int fd = inside->open_inside(other.string());
+                if (fd >= 0) close(fd), add(other.string());
+            } else if (fs::is_regular_file(other, ec)) {
+                add(other.string());
+            }
         }
     }
     return out;
@@ -155,8 +146,9 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
     int checker = -1;
     auto& scene = flat.scene;
     TextureLimits left = options.limits;  // max_total_bytes shrinks as textures are loaded
-    const ConfinedFolders folders(scene_path, options.search_dirs);  // where a confined texture may be
-    auto allowed = [&](const std::string& candidate) { return !options.confined || folders.contains(candidate); };
+    std::unique_ptr<Confinement> inside;  // where a confined texture may be
+    if (options.confined && !options.preread)
+        inside = std::make_unique<Confinement>(confinement_folders(scene_path, options.search_dirs));
 
     for (std::size_t m = 0; m < scene.materials.size(); ++m) {
         const ObjectDesc* src = flat.material_sources[m];
@@ -211,23 +203,21 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
         if (auto o = options.overrides.find(ref.file); o != options.overrides.end()) candidates.push_back(o->second);
         for (auto& c : texture_candidates(ref.file, scene_path, options.search_dirs)) candidates.push_back(c);
         if (ref.loose_lookup || is_windows_path(ref.file))
-            for (auto& c : loose_texture_candidates(ref.file, scene_path, options.search_dirs)) candidates.push_back(c);
+            for (auto& c : loose_texture_candidates(ref.file, scene_path, options.search_dirs, inside.get())) candidates.push_back(c);
 
         int index = -1;
-        std::string reason;  // the first decoder complaint, if a file was found but unreadable
+        std::string reason;  // the first complaint about a file that was found but unreadable
         std::vector<std::string> tried;
         for (const std::string& c : candidates) {
             tried.push_back(c);
-            std::error_code ec;
-            // Anything there is tried (and a device or a FIFO refused by name); nothing there is "not found".
-            if (!fs::exists(c, ec)) continue;
-            if (!allowed(c)) {
-                if (reason.empty())
-                    reason = "'" + c + "' is outside the scene's folder and the --texture-path folders (--untrusted)";
+            // Opened first, then checked: what is read is what was opened (confined: from inside).
+            FileContents file = read_regular_file(c, left.max_file_bytes, options.cancel, inside.get());
+            if (file.missing || file.cancelled) continue;
+            if (!file.ok()) {
+                if (reason.empty()) reason = "cannot read '" + c + "': " + file.error;
                 continue;
             }
-            std::string key = fs::weakly_canonical(c, ec).string();
-            if (ec) key = fs::absolute(c).lexically_normal().string();
+            const std::string key = std::to_string(file.device) + ":" + std::to_string(file.inode);
             if (auto f = index_of_file.find(key); f != index_of_file.end()) {
                 index = f->second;
                 if (kept && options.keep_files) (*kept)[ref.file] = (*kept)[name_of_file[key]];  // another spelling
@@ -235,8 +225,7 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
             }
             TextureImage img;
             std::string why;
-            std::string bytes;
-            if (!read_and_decode(c, left, img, bytes, why)) {
+            if (!decode(c, file.bytes, left, img, why)) {
                 // Found but unreadable: remember why and keep looking; a later place may hold a good copy.
                 if (reason.empty()) reason = why;
                 continue;
@@ -246,7 +235,7 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
             scene.textures.push_back(std::move(img));
             index_of_file[key] = index;
             name_of_file[key] = ref.file;
-            if (kept && options.keep_files) (*kept)[ref.file].assign(bytes.begin(), bytes.end());
+            if (kept && options.keep_files) (*kept)[ref.file].assign(file.bytes.begin(), file.bytes.end());
             if (files_read) files_read->push_back(c);
             if (!reason.empty())
                 diagnostics.push_back({Severity::Warning, ref.loc,
@@ -254,7 +243,10 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
                                            "), using '" + c + "'"});
             break;
         }
-        if (reason.empty()) reason = "not found";
+        if (reason.empty())
+            reason = options.confined
+                         ? "not found inside the scene's folder and the --texture-path folders (--untrusted)"
+                         : "not found";
         if (index < 0) {
             missing.push_back({ref.file, ref.loc, tried, reason});
             const bool as_checker =

@@ -1,12 +1,13 @@
 #pragma once
 // Finds and decodes the textures a flattened scene's materials name (scene-format.md §8),
 // one decode per file however many objects use it.
-#include <filesystem>
+#include <atomic>
 #include <map>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "base/read_file.h"
 #include "flatten/flatten.h"
 #include "texture/texture_decode.h"
 
@@ -34,10 +35,15 @@ struct TextureOptions {
     // Keep the bytes of every file a texture was decoded from (LoadResult::texture_files), to send on.
     bool keep_files = false;
     // For files from others (--untrusted): a texture is read only from inside the scene file's
-    // folder or a search dir (after following links and `..`); absolute names are refused.
+    // folder or a search dir (links followed only while they stay inside: base/read_file.h);
+    // absolute names are refused; outside and missing are one message.
     bool confined = false;
     TextureLimits limits;  // per file, and max_total_bytes for all of a scene's textures together
+    const std::atomic<bool>* cancel = nullptr;  // stops reading a file (then every later one is missing)
 };
+
+// The folders a confined file (--untrusted) may come from: the scene file's, then each search dir.
+std::vector<std::string> confinement_folders(const std::string& scene_path, const std::vector<std::string>& search_dirs);
 
 struct MissingTexture {
     std::string name;                // as written in the scene
@@ -53,18 +59,6 @@ struct MissingTexture {
 std::vector<std::string> texture_candidates(const std::string& name, const std::string& scene_path,
                                             const std::vector<std::string>& search_dirs);
 
-// The folders a file named by a scene from others (--untrusted) may be read from: the folder of
-// `scene_path` and each search dir, links and `..` followed. Textures and meshes alike.
-class ConfinedFolders {
-public:
-    ConfinedFolders(const std::string& scene_path, const std::vector<std::string>& search_dirs);
-    // Whether `candidate` (an existing path) is one of the folders or inside one, links followed.
-    bool contains(const std::string& candidate) const;
-
-private:
-    std::vector<std::filesystem::path> roots_;
-};
-
 // True for a name written as a Windows path: a `\` in it, or a drive letter (`C:`).
 bool is_windows_path(const std::string& name);
 
@@ -74,8 +68,10 @@ bool is_windows_path(const std::string& name);
 // `image/earth.bmp`, then `earth.bmp`); then, for every place tried so far in its order, the
 // files beside it with the same stem and another image extension (`image/earth.ppm`), which
 // exist (the others are not listed). Without the places already in `texture_candidates`.
+// With `inside` (--untrusted), a file beside is looked for through it: none outside is listed.
 std::vector<std::string> loose_texture_candidates(const std::string& name, const std::string& scene_path,
-                                                  const std::vector<std::string>& search_dirs);
+                                                  const std::vector<std::string>& search_dirs,
+                                                  const Confinement* inside = nullptr);
 
 // Fills flat.textures and each material's texture index. Each file is decoded once however many
 // materials name it. `options.overrides[name]`, when present, is tried before the built-in places.

@@ -1,7 +1,9 @@
 // The BVH against brute force: the same nearest hit (instance, t, part) and the same shadow
 // transmittance on random scenes of every shape under random affine maps, plus the structure's
 // invariants and the degenerate inputs (empty, all in one place, deep stacks).
+#include <atomic>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -263,6 +265,24 @@ TEST(Bvh, DeepStacksOf100kInstances) {
         EXPECT_EQ(transmittance(bvh, stack, {Material{}}, rays[i], 0.0f, kInf),
                   transmittance_brute_force(stack, {Material{}}, rays[i], 0.0f, kInf));
     }
+}
+
+// A build of millions looks at the cancel flag every few nodes (a 10M-instance
+// build ran 10 s after the signal); cancelled, it leaves an empty tree and the instances as they were.
+TEST(Bvh, ACancelledBuildLeavesNothingHalfMade) {
+    RandomScene scene = random_scene(5, 20000, 50.0f);
+    const std::vector<Instance> before = scene.instances;
+    const std::atomic<bool> cancel{true};
+    std::vector<std::uint32_t> order;
+    const Bvh bvh = build_bvh(scene.instances, 1, nullptr, &order, &cancel);
+    EXPECT_TRUE(bvh.nodes.empty());
+    EXPECT_TRUE(order.empty());
+    for (std::size_t i = 0; i < before.size(); ++i)
+        ASSERT_EQ(std::memcmp(&scene.instances[i], &before[i], sizeof(Instance)), 0);
+    // Not cancelled: the whole tree.
+    const std::atomic<bool> go{false};
+    const Bvh whole = build_bvh(scene.instances, 1, nullptr, nullptr, &go);
+    check_structure(whole, scene.instances);
 }
 
 }  // namespace

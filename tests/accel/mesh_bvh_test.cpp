@@ -3,6 +3,7 @@
 // any-hit crossings, and the memory a mesh and many instances of it take.
 #include <algorithm>
 #include <bit>
+#include <limits>
 #include <cstring>
 #include <random>
 #include <set>
@@ -276,6 +277,40 @@ TEST(MeshMemory, TenThousandInstancesShareOneMesh) {
     const glm::vec3 c = glm::vec3(test::translate_scale_for_grid(1234)[3]);
     ASSERT_TRUE(scene.intersect(Ray{c + glm::vec3(0, 0, 5), {0, 0, -1}}, h));
     EXPECT_NEAR(h.t, 5.0f - 0.5f, 1e-3f);
+}
+
+}  // namespace
+}  // namespace whitted
+
+namespace whitted {
+namespace {
+
+// Found by fuzzing the OBJ target: a ray whose origin had overflowed to infinity gave
+// NaN in the box tests, which the SIMD min and max turned into "entered" for a wide node's unused
+// slots, whose child 0 is the root: the walk went round, overflowing its stack. A ray that is not
+// finite meets nothing, in every walk.
+TEST(MeshBvh, ARayThatIsNotFiniteMeetsNothing) {
+    TriangleMesh mesh = test::uv_sphere(6, 8);  // a few leaves under one node: unused slots too
+    const MeshBvh bvh = build_mesh_bvh(mesh, 1);
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    for (const Ray& ray : {Ray{{inf, 0.1f, 0.2f}, {-1, 0, 0}}, Ray{{3, 0.1f, 0.2f}, {-inf, 0, 0}},
+                           Ray{{3, nan, 0.2f}, {-1, 0, 0}}, Ray{{3, 0.1f, 0.2f}, {nan, 0, 0}},
+                           Ray{{-inf, -inf, -inf}, {inf, inf, inf}}}) {
+        MeshHit hit;
+        EXPECT_FALSE(mesh_intersect_nearest(bvh, ray, 0.0f, inf, hit));
+        EXPECT_TRUE(mesh_for_each_crossing(bvh, ray, 0.0f, inf, [](std::uint32_t) { return false; }));
+    }
+    MeshHit hit;  // and a finite ray still does
+    EXPECT_TRUE(mesh_intersect_nearest(bvh, Ray{{3, 0.1f, 0.2f}, {-1, 0, 0}}, 0.0f, inf, hit));
+    // The top level too.
+    std::vector<Instance> instances;
+    for (int i = 0; i < 40; ++i)
+        instances.push_back(make_instance(glm::translate(glm::mat4(1.0f), glm::vec3(float(i), 0, 0)), ShapeKind::Sphere, 0));
+    const Bvh top = build_bvh(instances);
+    Hit h;
+    EXPECT_FALSE(intersect_nearest(top, instances, Ray{{nan, 0, 0}, {1, 0, 0}}, 0.0f, inf, h));
+    EXPECT_FALSE(intersect_nearest(top, instances, Ray{{-5, 0, 0}, {inf, 0, 0}}, 0.0f, inf, h));
+    EXPECT_TRUE(intersect_nearest(top, instances, Ray{{-5, 0, 0}, {1, 0, 0}}, 0.0f, inf, h));
 }
 
 }  // namespace

@@ -94,7 +94,7 @@ TEST(CliHostile, ASecondSignalInTheWriteLeavesNoTemporaryFile) {
     for (int gap : {0, 40, 120, 300}) {
         SCOPED_TRACE(gap);
         auto r = run_process({test::cli_path(), scene, "-o", dir + "/big.ppm", "--width", "4000", "--height", "4000",
-                              "--max-depth", "12", "-q"},
+                              "--max-depth", "1", "-q"},
                              std::vector<TimedSignal>{{300, SIGHUP}, {300 + gap, SIGHUP}, {60000, SIGKILL}});
         EXPECT_EQ(r.exit_code, 130) << r.output;
         EXPECT_FALSE(fs::exists(dir + "/big.ppm"));
@@ -185,6 +185,20 @@ TEST(CliHostile, TheProgressLineFitsANarrowTerminal) {
         }
         EXPECT_GE(draws, 1) << r.output;
     }
+}
+
+// under a file size limit (`ulimit -f`) the write died of SIGXFSZ and left its
+// temporary file. The signal is ignored: the write fails with "File too large" and is cleaned up.
+TEST(CliHostile, AFileSizeLimitFailsTheWriteCleanly) {
+    const std::string dir = test::make_temp_dir();
+    const std::string scene = write_file(dir, "s.sc", test::kSimpleScene);
+    // 100 KiB allowed, 120,015 bytes of PPM to write.
+    auto r = run_process({"/bin/sh", "-c", "ulimit -f 100; exec \"$0\" \"$@\"", test::cli_path(), scene, "-o",
+                          dir + "/big.ppm", "--width", "200", "--height", "200", "-q"});
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_NE(r.output.find("cannot write '" + dir + "/big.ppm': File too large"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir + "/big.ppm"));
+    expect_no_temporary_files(dir);
 }
 
 }  // namespace

@@ -1,4 +1,9 @@
 // Image files: what write_image refuses before it writes a byte, and what it writes.
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -56,7 +61,7 @@ TEST(ImageIo, RefusesSizesItsEncodersCannotCount) {
     for (const char* name : {"/h.png", "/h.bmp", "/h.jpg", "/w.png"}) EXPECT_FALSE(fs::exists(dir + name)) << name;
 }
 
-// Issue 15, finding 1: 32768 × 21842 passed the old check and overflowed stb's zlib buffer (an int
+// 32768 × 21842 passed the old check and overflowed stb's zlib buffer (an int
 // capacity doubling past INT_MAX). PNGs are now compressed by zlib in bands: no size limit of
 // their own. BMP's is stb's sum 54 + 4·⌈3w/4⌉·h ≤ INT_MAX: at w = 32768 (98,304 bytes a row)
 // h ≤ 21,845 (2,147,450,934 bytes).
@@ -128,6 +133,64 @@ TEST(ImageIo, PngChunksCarryTheirCrcsAndTheFileEndsWithTheStandardIend) {
         at += 12 + length;
     }
     EXPECT_GE(chunks, 3);  // IHDR, IDAT, IEND at least
+}
+
+// Rewriting an image made a 0600 file 0644, and replaced a symbolic link to
+// the image with a new file. The file a link leads to is rewritten (the link stays), with its
+// permissions.
+TEST(ImageIo, RewritingKeepsThePermissionsAndWritesThroughALink) {
+    const std::string dir = test::make_temp_dir();
+    fs::create_directories(dir + "/real");
+    const std::string real = dir + "/real/out.png", via = dir + "/out.png";
+    Image one(2, 2), two(3, 3);
+    ASSERT_EQ(write_image(one, real), "");
+    fs::permissions(real, fs::perms::owner_read | fs::perms::owner_write);
+    fs::create_symlink("real/out.png", via);
+    ASSERT_EQ(write_image(two, via), "");
+    EXPECT_TRUE(fs::is_symlink(via));
+    Image back;
+    ASSERT_EQ(read_image(real, back), "");
+    EXPECT_EQ(back.width, 3);
+    EXPECT_EQ(fs::status(real).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+    ASSERT_EQ(write_linear_image(LinearImage{2, 1, {glm::vec3(0.5f), glm::vec3(2.0f)}, {}}, dir + "/real/l.exr"), "");
+    fs::permissions(dir + "/real/l.exr", fs::perms::owner_read | fs::perms::owner_write);
+    ASSERT_EQ(write_linear_image(LinearImage{1, 1, {glm::vec3(1.0f)}, {}}, dir + "/real/l.exr"), "");
+    EXPECT_EQ(fs::status(dir + "/real/l.exr").permissions() & fs::perms::all,
+              fs::perms::owner_read | fs::perms::owner_write);
+    int files = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir + "/real")) ++files;
+    EXPECT_EQ(files, 2) << "no temporary file is left behind";
+}
+
+// An EXR that could not be written (a full disk) said "the image could not be
+// encoded"; the system's reason is given. A file size limit stands in for the full disk here (in a
+// child process: the limit is the process's), with SIGXFSZ ignored as the command-line tools do.
+TEST(ImageIo, AnExrThatCannotBeWrittenSaysWhy) {
+    const std::string dir = test::make_temp_dir();
+    int pipe_fds[2];
+    ASSERT_EQ(pipe(pipe_fds), 0);
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        signal(SIGXFSZ, SIG_IGN);
+        const rlimit limit{4096, 4096};
+        setrlimit(RLIMIT_FSIZE, &limit);
+        LinearImage big{256, 256, std::vector<glm::vec3>(256 * 256), {}};
+        for (std::size_t i = 0; i < big.rgb.size(); ++i) big.rgb[i] = glm::vec3(float(i % 977), float(i % 13), 0.1f * float(i));
+        const std::string err = write_linear_image(big, dir + "/big.exr");
+        (void)!write(pipe_fds[1], err.data(), err.size());
+        _exit(0);
+    }
+    close(pipe_fds[1]);
+    std::string err;
+    char buf[256];
+    for (ssize_t n; (n = read(pipe_fds[0], buf, sizeof buf)) > 0;) err.append(buf, std::size_t(n));
+    close(pipe_fds[0]);
+    int status = 0;
+    waitpid(child, &status, 0);
+    EXPECT_NE(err.find("File too large"), std::string::npos) << err;
+    EXPECT_FALSE(fs::exists(dir + "/big.exr"));
+    for (const auto& e : fs::directory_iterator(dir)) ADD_FAILURE() << "left behind: " << e.path();
 }
 
 }  // namespace

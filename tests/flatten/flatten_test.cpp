@@ -159,7 +159,7 @@ SceneDescription doubling_over_sphere(int levels) {
     return d;
 }
 
-// Issue 15, finding 9: the memory a scene needs is estimated from the counts, before any object
+// The memory a scene needs is estimated from the counts, before any object
 // is made: 2^10 spheres at kBytesPerInstance (128) each is 131,072 bytes; the walk takes
 // a(10) steps of kBytesPerStep (8) each, where a(0) = 2 (s0 and its trans block) and
 // a(i) = 2 + 2·a(i − 1) (the subgraph, its trans block, two uses of the level below): a(10) =
@@ -270,6 +270,58 @@ TEST(Camera, OrthonormalisesUpAndUsesFocus) {
     expect_vec(cam.up, {0, 1, 0});
     expect_vec(cam.right, {1, 0, 0});
     EXPECT_NEAR(cam.tan_half_fov, 1.0f, 1e-6f);
+}
+
+}  // namespace
+}  // namespace whitted
+
+namespace whitted {
+namespace {
+
+// One subgraph may hold a hundred thousand objects (or a million subgraphs one each): the walk
+// looks at the cancel flag by the work done, not only between subgraphs.
+TEST(Flatten, StopsWhenCancelledInsideOneBigSubgraph) {
+    SceneDescription d;
+    d.path = "flat.sc";
+    SubgraphDesc root{"root", {}, {}};
+    TransDesc t = trans(glm::mat4(1.0f));
+    for (int i = 0; i < 100000; ++i) t.objects.push_back({ShapeKind::Sphere, {}, {}});
+    root.children = {t};
+    d.subgraphs = {root};
+    d.root = 0;
+    const std::atomic<bool> cancel{true};
+    const FlattenResult r = flatten(d, {.cancel = &cancel});
+    EXPECT_TRUE(r.cancelled);
+    EXPECT_LT(r.scene.instances.size(), 100000u);
+}
+
+// The camera within the objects' range (10^30): at 3e38 every ray's arithmetic overflowed and the
+// image came out black with exit 0. Within it, a camera far from what it looks at still gets its
+// basis (float's |v|² overflows from 1.8e19 on: then it is found in double).
+TEST(Flatten, TheCameraIsWithinTheRangeOfTheObjects) {
+    SceneDescription d = two_level_scene();
+    d.camera.eye = {3e38f, 0, 0};
+    d.camera.loc = {"test.sc", 1, 1};
+    FlattenResult r = flatten(d);
+    ASSERT_FALSE(r.ok());
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_NE(r.diagnostics[0].message.find("the camera's eye is more than 1e30 from the origin"), std::string::npos)
+        << r.diagnostics[0].message;
+    d.camera.eye = {1e25f, 0, 0};
+    d.camera.focus = {0, 0, 0};
+    d.camera.use_focus = true;
+    r = flatten(d);
+    ASSERT_TRUE(r.ok());
+    expect_vec(r.scene.camera.forward, {-1, 0, 0});
+    expect_vec(r.scene.camera.right, glm::normalize(glm::cross(glm::vec3(-1, 0, 0), glm::vec3(0, 1, 0))));
+    EXPECT_FLOAT_EQ(r.scene.camera.focal_distance, 1e25f);
+    // A camera that worked before is the same bits.
+    d = two_level_scene();
+    d.camera.eye = {1, 2, 3};
+    d.camera.focus = {0.5f, -1, 0.25f};
+    d.camera.use_focus = true;
+    const Camera c = flatten(d).scene.camera;
+    EXPECT_EQ(c.forward, glm::normalize(d.camera.focus - d.camera.eye));
 }
 
 }  // namespace

@@ -295,3 +295,27 @@ TEST(PixelInspector, BrownTuftsChainStartsAtTheTopLevelTransBlocks) {
 
 }  // namespace
 }  // namespace whitted
+
+namespace whitted {
+namespace {
+
+// --inspect honours --timeout and Ctrl-C: it traces every sample of the pixel
+// again, millions with --spp 65536 --aa 16; the job's cancel flag stops it, and the report says it
+// is incomplete instead of showing half an average.
+TEST(PixelInspector, StopsWhenTheJobIsCancelled) {
+    const auto scene = load_inspect_scene();
+    ASSERT_TRUE(scene);
+    RenderJob j = job();
+    j.sampling.aa = Sampler::kMaxAa;
+    j.sampling.spp = Sampler::kMaxSpp;
+    const std::atomic<bool> cancel{true};
+    const PixelReport r = inspect_pixel(*scene, j, 3, 3, &cancel);
+    EXPECT_TRUE(r.cancelled);
+    // The job's own flag is the render's (the viewer's, set when a render is replaced): not the inspector's.
+    j.sampling = {};
+    j.cancel = &cancel;
+    EXPECT_FALSE(inspect_pixel(*scene, j, 3, 3).cancelled);
+}
+
+}  // namespace
+}  // namespace whitted

@@ -1,5 +1,10 @@
 // Reading OBJ files (scene-format.md §9.3): polygons triangulated, normals and texture coordinates
 // kept per corner (a vertex per distinct v/vt/vn), degenerate triangles skipped, and every error with the OBJ line it is on.
+#include <sys/stat.h>
+
+#include <atomic>
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "mesh/obj_reader.h"
@@ -84,11 +89,11 @@ TEST(ObjReader, BadFaceIndexNamesItsLine) {
     struct Case { const char* text; int line; const char* says; };
     const Case cases[] = {
         {"v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n", 5, "vertex 4"},
-        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 0 1 2\n", 5, "vertex 0"},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 0 1 2\n", 5, "vertex index 0"},
         {"v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n", 3, "vertex -3"},
         {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/1\n", 5, "texture coordinate 2"},
         {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//7\n", 5, "normal 7"},
-        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n", 4, "expected a vertex index"},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n", 4, "no number where a vertex index belongs"},
         // A polygon with a bad index (tinyobjloader would read out of bounds triangulating it).
         {"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 4 99 3\n", 5, "vertex 99"},
     };
@@ -99,6 +104,156 @@ TEST(ObjReader, BadFaceIndexNamesItsLine) {
         EXPECT_EQ(r.line, c.line) << c.text;
         EXPECT_NE(r.error.find(c.says), std::string::npos) << r.error;
     }
+}
+
+// Found by fuzzing: tinyobjloader ends a line at a lone \r too, which the old check of
+// the text (lines split at \n) did not, so a bad index slipped through and was read out of bounds
+// (SIGSEGV). Every index it returns is now checked, whatever the line endings.
+TEST(ObjReader, EveryIndexIsCheckedWhateverTheLineEndings) {
+    struct Case { const char* text; int line; const char* says; };
+    const Case cases[] = {
+        // Old Mac line endings: four lines, the face's third vertex beyond the three.
+        {"v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 99999\r", 4, "vertex 99999, but the file has 3"},
+        // A bare `v` (no coordinates) is no vertex to tinyobjloader: the text had four `v` lines.
+        {"v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nv\r\nf 1 2 4\r\n", 5, "vertex 4, but the file has 3"},
+        // Counting back past the first vertex, on a line ended by \r.
+        {"v 0 0 0\rv 1 0 0\rf -1 -2 -3\rv 0 1 0\r", 3, "vertex -3"},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\rf 1//1 2//1 3//2\n", 5, "normal 2, but the file has 1"},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\r\nf 1/2 2/1 3/1\r\n", 5, "texture coordinate 2"},
+        // An index past int's range.
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2147483648\n", 4, "vertex"},
+    };
+    for (const Case& c : cases) {
+        TriangleMesh m;
+        const ObjReadResult r = read_obj_text(c.text, "bad.obj", m);
+        EXPECT_FALSE(r.ok) << c.text;
+        EXPECT_EQ(r.line, c.line) << c.text;
+        EXPECT_NE(r.error.find(c.says), std::string::npos) << r.error;
+    }
+    // A reference to a vertex defined further down is fine (OBJ allows it), with any line ending.
+    TriangleMesh m;
+    const ObjReadResult r = read_obj_text("v 0 0 0\rf 1 2 3\rv 1 0 0\rv 0 1 0\r", "ahead.obj", m);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(m.triangles.size(), 1u);
+}
+
+// Found by fuzzing (the OBJ target's first minute): tinyobjloader's number parser
+// overflowed an int on the exponent 2147483648 (undefined behaviour; it checks the multiplication,
+// not the addition after it). Built with -fwrapv, that number is a garbage value like any other.
+TEST(ObjReader, ANumberWithAHugeExponentIsJustABadNumber) {
+    TriangleMesh m;
+    const ObjReadResult r = read_obj_text("v 1e2147483648 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
+                                          "v 0 0 0\nv 1 0 0\nv 0 1e-2147483649 1\nf 4 5 6\n",
+                                          "huge.obj", m);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_GE(m.triangles.size(), 1u);
+}
+
+// A file from others may be anything: its words are never quoted in a message (a secret named as
+// a mesh would otherwise be printed a word at a time).
+TEST(ObjReader, MessagesQuoteNothingOfTheFile) {
+    for (const char* text : {"SECRET_TOKEN_1 SECRET_TOKEN_2\n", "v 0 0 0\nf SECRET_TOKEN 1 2\n",
+                             "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/SECRET_TOKEN/x 2 9\n"}) {
+        TriangleMesh m;
+        const ObjReadResult r = read_obj_text(text, "secret.txt", m);
+        EXPECT_FALSE(r.ok);
+        EXPECT_EQ(r.error.find("SECRET"), std::string::npos) << r.error;
+    }
+}
+
+// A polygon of 64,000 corners (a 9 MB file of them took 430 s: tinyobjloader's ear clipping is
+// quadratic) is split as a fan from its first corner, and said so; small ones are ear-clipped, which
+// is right for a concave polygon where a fan is not.
+TEST(ObjReader, HugePolygonsAreFansSmallOnesAreEarClipped) {
+    std::string text;
+    constexpr int kCorners = 64000;
+    for (int i = 0; i < kCorners; ++i) {
+        const double a = 2 * 3.14159265358979 * i / kCorners;
+        text.append("v ").append(std::to_string(std::cos(a))).append(" ").append(std::to_string(std::sin(a))).append(" 0\n");
+    }
+    text += "f";
+    for (int i = 1; i <= kCorners; ++i) text.append(" ").append(std::to_string(i));
+    text += "\n";
+    TriangleMesh m;
+    ObjReadResult r = read_obj_text(text, "disc.obj", m);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.fans, 1u);
+    EXPECT_EQ(m.triangles.size() + r.degenerate, std::size_t(kCorners - 2));
+    for (const TriangleIndices& t : m.triangles) EXPECT_EQ(m.positions[t[0]], glm::vec3(1, 0, 0));
+
+    // An arrow head (concave at its 4th corner): a fan from corner 1 would cover the notch.
+    //   5 ---------- 4 is the notch at (2, 1): the polygon is 1 (0,0) 2 (4,0) 3 (4,3) 4 (2,1) 5 (0,3).
+    r = read_obj_text("v 0 0 0\nv 4 0 0\nv 4 3 0\nv 2 1 0\nv 0 3 0\nf 1 2 3 4 5\n", "notch.obj", m);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.fans, 0u);
+    ASSERT_EQ(m.triangles.size(), 3u);
+    float area = 0;
+    for (std::uint32_t t = 0; t < 3; ++t) {
+        area += triangle_area(m, t);
+        // Counter-clockwise like the polygon, so facing +z.
+        EXPECT_GT(triangle_geometric_normal(m, t).z, 0.0f) << t;
+    }
+    // The outline's 4 × 3 = 12 less the notch's triangle (4,3)-(2,1)-(0,3), 4 (a fan would give 10).
+    EXPECT_NEAR(area, 8.0f, 1e-5f);
+}
+
+// A million copies of one triangle made every ray that met it test them all (6.6 ms a ray): a
+// triangle with the same three corners in the same order as an earlier one is the same triangle to
+// every ray (the same arithmetic, and of equal hits the first wins), so it is kept once.
+TEST(ObjReader, RepeatedTrianglesAreKeptOnce) {
+    std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (int i = 0; i < 1000; ++i) text += i % 2 ? "f 1 2 3\n" : "f 4 5 6\n";  // the same corners, other vertices
+    text += "f 2 3 1\nf 3 2 1\n";  // turned or reversed: another triangle to the arithmetic, kept
+    TriangleMesh m;
+    const ObjReadResult r = read_obj_text(text, "copies.obj", m);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(m.triangles.size(), 3u);
+    EXPECT_EQ(r.duplicates, 999u);
+}
+
+// The memory a mesh needs (its text, what the parse keeps, the triangles with their BVH) is counted
+// as it is read: over the limit it is refused instead of taking gigabytes (a 64 MB file took 1.48 GB).
+TEST(ObjReader, RefusesWhatNeedsMoreMemoryThanTheLimit) {
+    std::string text;
+    for (int i = 0; i < 20000; ++i) {
+        const std::string x = std::to_string(i);
+        text += "v " + x + " 0 0\nv " + x + " 1 0\nv " + x + " 0 1\nf -3 -2 -1\n";
+    }
+    TriangleMesh m;
+    ObjLimits limits;
+    const ObjReadResult all = read_obj_text(text, "big.obj", m, limits);
+    ASSERT_TRUE(all.ok) << all.error;
+    // What it needs: at least its triangles with their BVH estimate.
+    EXPECT_GE(all.bytes, m.triangles.size() * (sizeof(TriangleIndices) + kMeshBvhBytesPerTriangle));
+    limits.max_bytes = all.bytes - 1;
+    const ObjReadResult r = read_obj_text(text, "big.obj", m, limits);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("needs more than the"), std::string::npos) << r.error;
+    EXPECT_TRUE(m.triangles.empty());
+    // Far below: refused while the text is read.
+    limits.max_bytes = text.size() + 1000;
+    EXPECT_FALSE(read_obj_text(text, "big.obj", m, limits).ok);
+}
+
+TEST(ObjReader, StopsWhenCancelledAndReadsOnlyRegularFilesWithinTheLimit) {
+    const std::atomic<bool> cancel{true};
+    TriangleMesh m;
+    ObjLimits limits;
+    limits.cancel = &cancel;
+    const ObjReadResult r = read_obj_text(test::cube_obj(), "cube.obj", m, limits);
+    EXPECT_TRUE(r.cancelled);
+    EXPECT_FALSE(r.ok);
+    EXPECT_TRUE(r.error.empty()) << r.error;
+
+    const std::string dir = test::make_temp_dir();
+    const std::string path = test::write_file(dir, "cube.obj", test::cube_obj());
+    ObjLimits small;
+    small.max_file_bytes = 100;
+    const ObjReadResult big = read_obj(path, m, small);
+    EXPECT_NE(big.error.find("more than the limit of 100 bytes"), std::string::npos) << big.error;
+    ASSERT_EQ(mkfifo((dir + "/fifo.obj").c_str(), 0600), 0);
+    const ObjReadResult fifo = read_obj(dir + "/fifo.obj", m);  // no writer: would block if opened for reading
+    EXPECT_NE(fifo.error.find("not a regular file"), std::string::npos) << fifo.error;
 }
 
 TEST(ObjReader, FileWithoutTrianglesIsAnError) {

@@ -1,6 +1,8 @@
 // whitted-mpi's checkpoint: the tiles written come back with the same bytes; a record cut short
 // by a kill, or damaged, is dropped (that tile is rendered again); another job's file is refused;
 // a good file is replaced only whole.
+#include <sys/stat.h>
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -106,6 +108,74 @@ TEST(Checkpoint, ReopeningKeepsTheTilesAlreadyDone) {
     EXPECT_EQ(done, (std::vector<bool>{false, false, true, false, true, false}));
     expect_tile(g, 4, true);
     expect_tile(g, 2, true);
+}
+
+// One bad record (a flipped byte, its index or its pixels) dropped every good
+// record after it. The next record is looked for where the bad one would end, for each size of tile.
+TEST(Checkpoint, ABadRecordCostsOnlyItsOwnTile) {
+    const std::string dir = test::make_temp_dir();
+    // Tiles 0 (8 × 8), 2 (4 × 8), 3 (8 × 2), 5 (4 × 2): every size of record there is.
+    const std::vector<int> tiles{0, 2, 3, 5};
+    auto record_size = [](int t) { return 4 + std::size_t(kGrid.pixels(t)) * sizeof(FilmPixel) + 8; };
+    const std::size_t header = std::filesystem::file_size(write(dir + "/empty", {}));
+    for (int bad : {0, 1, 2}) {  // the record of tiles[bad]
+        SCOPED_TRACE(bad);
+        const std::string path = write(dir + "/ck" + std::to_string(bad), tiles);
+        std::size_t start = header;
+        for (int k = 0; k < bad; ++k) start += record_size(tiles[std::size_t(k)]);
+        for (const std::size_t offset : {std::size_t(1), std::size_t(37)}) {  // its index; its pixels
+            std::fstream io(path, std::ios::in | std::ios::out | std::ios::binary);
+            io.seekg(std::streamoff(start + offset));
+            const char c = char(io.get());
+            io.seekp(std::streamoff(start + offset));
+            io.put(char(c ^ 0x55));
+            io.close();
+            Film f(kGrid.width, kGrid.height);
+            std::vector<bool> done;
+            ASSERT_EQ(read_checkpoint(path, {7, kGrid}, f, done), "");
+            std::vector<bool> want(6, false);
+            for (int t : tiles) want[std::size_t(t)] = t != tiles[std::size_t(bad)];
+            EXPECT_EQ(done, want) << "flipped byte " << offset;
+            for (int t = 0; t < kGrid.count(); ++t) expect_tile(f, t, want[std::size_t(t)]);
+            io.open(path, std::ios::in | std::ios::out | std::ios::binary);  // undo
+            io.seekp(std::streamoff(start + offset));
+            io.put(c);
+        }
+    }
+}
+
+// --resume /dev/zero read until memory ran out, a FIFO blocked. A checkpoint
+// is read through base/read_file.h: a regular file, no larger than one of this job can be.
+TEST(Checkpoint, ResumeReadsOnlyARegularFileOfAPossibleSize) {
+    const std::string dir = test::make_temp_dir();
+    Film f(kGrid.width, kGrid.height);
+    std::vector<bool> done;
+    EXPECT_NE(read_checkpoint("/dev/zero", {7, kGrid}, f, done).find("it is not a regular file"), std::string::npos);
+    ASSERT_EQ(mkfifo((dir + "/fifo").c_str(), 0600), 0);
+    EXPECT_NE(read_checkpoint(dir + "/fifo", {7, kGrid}, f, done).find("it is not a regular file"), std::string::npos);
+    const std::string path = write(dir + "/ck", {0, 1, 2, 3, 4, 5});
+    ASSERT_EQ(read_checkpoint(path, {7, kGrid}, f, done), "");  // every tile: the largest there is
+    std::filesystem::resize_file(path, std::filesystem::file_size(path) + 1);
+    EXPECT_NE(read_checkpoint(path, {7, kGrid}, f, done).find("no checkpoint of this job is as large"),
+              std::string::npos);
+}
+
+// --checkpoint scene.sc overwrote the scene, --checkpoint good.png -o good.png
+// the image. A checkpoint may not be anything the job reads or writes, by any name.
+TEST(Checkpoint, MayNotBeWhatTheJobReadsOrWrites) {
+    const std::string dir = test::make_temp_dir();
+    const std::string scene = test::write_file(dir, "s.sc", "camera [ ]\n");
+    const std::string texture = test::write_file(dir, "t.png", "png");
+    std::filesystem::create_symlink("s.sc", dir + "/link.sc");
+    const std::vector<std::string> inputs{scene, texture};
+    const std::string out = dir + "/out.png";
+    EXPECT_NE(checkpoint_conflict(scene, out, inputs).find("is '" + scene + "', which the job reads"), std::string::npos);
+    EXPECT_NE(checkpoint_conflict(dir + "/link.sc", out, inputs), "");
+    EXPECT_NE(checkpoint_conflict(dir + "/./t.png", out, inputs), "");
+    EXPECT_NE(checkpoint_conflict(out, out, inputs).find("is the output image"), std::string::npos);  // not there yet
+    EXPECT_NE(checkpoint_conflict(dir + "/out.partial.png", out, inputs).find("an interrupted job writes"),
+              std::string::npos);
+    EXPECT_EQ(checkpoint_conflict(dir + "/ck", out, inputs), "");
 }
 
 }  // namespace

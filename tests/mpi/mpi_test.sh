@@ -154,7 +154,7 @@ scene_error)
     [[ $(grep -c "bad.sc:3:[0-9]*: error" "$out/log") == 1 ]] || fail "the error is not reported exactly once"
     [[ ! -e $out/mpi.png ]] || fail "an image was written" ;;
 hostile_input)
-    # Issue 15 on rank 0: /dev/zero is refused at once (it never ends), and a missing output folder
+    # On rank 0: /dev/zero is refused at once (it never ends), and a missing output folder
     # before anything is loaded; every rank exits 3 and nothing is written.
     timeout 60 "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" /dev/zero -o "$out/mpi.png" >"$out/log" 2>&1
     rc=$?
@@ -177,7 +177,7 @@ mismatched_ranks)
         -np 1 "$out/other-build" "$src/scenes/textures.sc" -o "$out/a.png" >"$out/log" 2>&1 && fail "accepted"
     grep -q "rank 1 runs another whitted-mpi executable" "$out/log" || { cat "$out/log"; fail "no message"; } ;;
 narrow_terminal)
-    # Issue 15, finding 13: on a terminal narrower than the progress line each update wrapped into a
+    # on a terminal narrower than the progress line each update wrapped into a
     # new line. Run alone (one rank, no mpirun, whose ranks write into pipes) in a terminal of
     # 30, 42 and 12 columns, every redraw leaves the last column free and still shows the percentage.
     for cols in 30 42 12; do
@@ -191,5 +191,57 @@ narrow_terminal)
             END { exit bad }' "$out/draws" || fail "$cols columns: a line does not fit"
         echo "ok: $cols columns, $(wc -l <"$out/draws") draws"
     done ;;
+checkpoint_conflict)
+    # --checkpoint scene.sc overwrote the scene (exit 0), and --checkpoint good.png
+    # -o good.png + Ctrl-C the image. A checkpoint that is anything the job reads or writes is refused
+    # before a byte is written; --resume reads only a regular file.
+    cp -r "$src/scenes/textures.sc" "$src/scenes/textures" "$out/"
+    cp "$out/textures.sc" "$out/scene-before.sc"
+    printf 'good image' >"$out/good.png"
+    ln -s textures.sc "$out/link.sc"
+    for ck in "$out/textures.sc" "$out/link.sc" "$out/good.png" "$out/good.partial.png" "$out/textures/world.png"; do
+        "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$out/textures.sc" -o "$out/good.png" "${SIZE[@]}" --checkpoint "$ck" \
+            >"$out/log" 2>&1
+        rc=$?
+        [[ $rc == 1 ]] || { cat "$out/log"; fail "--checkpoint $ck: exit code $rc, not 1"; }
+        grep -q "error: --checkpoint '$ck' is" "$out/log" || { cat "$out/log"; fail "--checkpoint $ck: no message"; }
+    done
+    cmp "$out/textures.sc" "$out/scene-before.sc" || fail "the scene was changed"
+    [[ "$(cat "$out/good.png")" == "good image" ]] || fail "the image was changed"
+    [[ ! -e $out/good.partial.png ]] || fail "a partial image was written"
+    mkfifo "$out/fifo"
+    for ck in /dev/zero "$out/fifo"; do
+        timeout 60 "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$out/textures.sc" -o "$out/new.png" "${SIZE[@]}" \
+            --resume "$ck" >"$out/log" 2>&1
+        rc=$?
+        [[ $rc == 1 ]] || { cat "$out/log"; fail "--resume $ck: exit code $rc, not 1"; }
+        grep -q "cannot read the checkpoint '$ck': it is not a regular file" "$out/log" ||
+            { cat "$out/log"; fail "--resume $ck: no message"; }
+    done
+    echo "ok" ;;
+mesh_resume)
+    # the mesh bytes are broadcast with the scene and counted in the job's key: a
+    # checkpoint made before a mesh file changed is refused (it gave half old blob, half new, exit 0).
+    mkdir -p "$out/features" && cp "$src/scenes/features/mesh.sc" "$out/features/" && cp -r "$src/scenes/meshes" \
+        "$src/scenes/textures" "$out/"
+    "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$out/features/mesh.sc" -o "$out/a.png" "${SIZE[@]}" --tile-size 16 \
+        --checkpoint "$out/ck" >"$out/log" 2>&1 || { cat "$out/log"; fail "first run"; }
+    sed -i 's/^v \([-0-9.e]*\) /v 0.5 /' "$out/meshes/blob.obj"  # another mesh
+    "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$out/features/mesh.sc" -o "$out/b.png" "${SIZE[@]}" --tile-size 16 \
+        --resume "$out/ck" >"$out/log" 2>&1 && { cat "$out/log"; fail "a checkpoint of the old mesh was used"; }
+    grep -q "was made from another scene, textures, meshes or render options" "$out/log" ||
+        { cat "$out/log"; fail "no message"; }
+    echo "ok" ;;
+timeout)
+    # --timeout (60 s by default under --untrusted, which had none): the job stops as on Ctrl-C, writes
+    # the part rendered beside the output, exits 130 saying why.
+    "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/mpi.png" "${SIZE[@]}" --threads 1 \
+        --tile-size 8 --test-slow-ms 100 --untrusted --timeout 1.5 >"$out/log" 2>&1
+    rc=$?
+    cat "$out/log"
+    [[ $rc == 130 ]] || fail "exit code $rc, not 130"
+    grep -q "the time limit of 1.5 s (--timeout) ran out: wrote the [0-9]* of 108 tiles" "$out/log" ||
+        fail "no message"
+    [[ -e $out/mpi.partial.png && ! -e $out/mpi.png ]] || fail "not written beside the output" ;;
 *) fail "unknown case $case_name" ;;
 esac

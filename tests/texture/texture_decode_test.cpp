@@ -58,7 +58,7 @@ TEST(TextureDecode, RefusesWhatExceedsTheMemoryLeftForTextures) {
 }
 
 TEST(TextureDecode, RefusesAPpmShorterThanItsHeaderSays) {
-    // Issue 15, finding 6: a P6 header of 2048² then 9 bytes decoded "successfully" into
+    // a P6 header of 2048² then 9 bytes decoded "successfully" into
     // 12 MB of uninitialised memory. 2048·2048·3 = 12,582,912 bytes after the 17-byte header.
     const std::string header = "P6\n2048 2048\n255\n";
     ASSERT_EQ(header.size(), 17u);

@@ -4,6 +4,7 @@
 #include "camera_text.h"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cstring>
 #include <filesystem>
@@ -251,6 +252,47 @@ TEST(CameraText, APlannedSaveIsNotWrittenOverAFileChangedSince) {
     written << again.rdbuf();
     EXPECT_EQ(written.str(), plan.replacement.text);
     EXPECT_NE(written.str().find(plan.replacement.block), std::string::npos);
+}
+
+std::string read_text(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// Save camera into a scene reached through a symbolic link replaced the link
+// with a new file and left the scene itself as it was; into one with two hard links, it broke the
+// link. The file itself gets the camera, keeping its permissions; the link stays a link, and
+// every name of a hard-linked file sees the new text.
+TEST(CameraText, SavingThroughALinkOrIntoAHardLinkedFileWritesTheFileItself) {
+    const std::string dir = test::make_temp_dir();
+    fs::create_directories(dir + "/real");
+    const std::string real = dir + "/real/s.sc", via = dir + "/link.sc";
+    const std::string text = std::string("camera [ eye 0 0 5 ]\n") + kRest;
+    const std::string want = camera_block(odd_camera()) + "\n" + kRest;
+    std::ofstream(real) << text;
+    ASSERT_EQ(chmod(real.c_str(), 0600), 0);
+    fs::create_symlink("real/s.sc", via);
+    ASSERT_EQ(save_camera_into_file(via, odd_camera()), "");
+    EXPECT_TRUE(fs::is_symlink(via));
+    EXPECT_EQ(read_text(real), want);
+    struct stat st {};
+    ASSERT_EQ(stat(real.c_str(), &st), 0);
+    EXPECT_EQ(st.st_mode & 0777, 0600u);
+    int files = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir + "/real")) ++files;
+    EXPECT_EQ(files, 1) << "no temporary file is left behind";
+
+    const std::string other = dir + "/other-name.sc";
+    std::ofstream(real, std::ios::trunc) << text;
+    ASSERT_EQ(link(real.c_str(), other.c_str()), 0);
+    ASSERT_EQ(save_camera_into_file(other, odd_camera()), "");
+    EXPECT_EQ(read_text(other), want);
+    EXPECT_EQ(read_text(real), want);
+    ASSERT_EQ(stat(real.c_str(), &st), 0);
+    EXPECT_EQ(st.st_nlink, 2u);
+    EXPECT_EQ(st.st_mode & 0777, 0600u);
 }
 
 }  // namespace

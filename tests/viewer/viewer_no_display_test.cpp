@@ -26,7 +26,7 @@ TEST(ViewerNoDisplay, HelpAndBadUsageNeedNoDisplay) {
     EXPECT_EQ(run_process({"/usr/bin/env", "-u", "DISPLAY", "ASAN_OPTIONS=" + asan_options_for_viewer(), WHITTED_VIEWER_PATH, "--mode", "fancy"}).exit_code, 1);
 }
 
-// Issue 15, finding 14: --screenshot / --exit-when-done with no scene waited forever for a render
+// --screenshot / --exit-when-done with no scene waited forever for a render
 // that never came; now a usage error at once (before the display is needed).
 TEST(ViewerNoDisplay, AutomatedRunsNeedAScene) {
     for (const char* flag : {"--exit-when-done", "--screenshot=x.png"}) {
