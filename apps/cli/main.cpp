@@ -136,16 +136,6 @@ int run(int argc, char** argv) {
     total.rays = session.rays();
     total.seconds = session.seconds();
     if (o.stats) print_stats(loaded.stats, total, session.samples_done(), session.passes_done());
-    if (!complete && session.passes_done() == 0 && last.tiles_done == 0) {
-        if (limit_ran_out())
-            std::cerr << "whitted: error: the time limit of "
-                      << (deadline.timed_out() ? timeout_seconds(s) : s.time_limit) << " s (" << limit_ran_out()
-                      << ") ran out before any tile was rendered: nothing written\n";
-        else
-            std::cerr << "whitted: interrupted before any tile was rendered: nothing written\n";
-        return limit_ran_out() ? kExitTimeout : kExitInterrupted;
-    }
-
     // An interrupted render never replaces the output: a good image from an earlier run may be
     // there (a batch timeout's SIGTERM must not destroy it). Its part goes beside it (the last
     // whole pass, or the first pass's tiles if there are some and they can be written quickly).

@@ -87,7 +87,7 @@ std::string collect_given(CLI::App& app, RenderSettings& settings, Frontend fron
         const CLI::Option* option = app.get_option_no_throw("--" + std::string(setting.name));
         if (!option || option->count() == 0) continue;
         if (setting.refused(frontend))
-            return "--" + std::string(setting.name) + " is not for this program: " + setting.refusal;
+            return "--" + std::string(setting.name) + " is not for this program: " + setting.why_refused(frontend);
         settings.given.insert(setting.name);
     }
     return "";

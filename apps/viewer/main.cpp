@@ -16,7 +16,9 @@
 #include <FL/Fl.H>
 #include <FL/x.H>
 
+#include "cs1230/detect.h"
 #include "film/image_io.h"
+#include "render_options.h"
 #include "viewer_window.h"
 
 namespace {
@@ -64,46 +66,14 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "whitted-view 0.1.0");
     app.option_defaults()->always_capture_default();
     ViewerOptions o;
-    std::string mode_name = "whitted", missing = "ask";
-    app.add_option("scene", o.scene, "Scene file (.sc) to open and render");
-    app.add_option("--width", o.settings.width, "Image width in pixels")->check(CLI::Range(1, 32768));
-    app.add_option("--height", o.settings.height, "Image height in pixels")->check(CLI::Range(1, 32768));
+    // The render settings of every front end (session/render_settings.h), as whitted takes them;
+    // those the viewer cannot honour are refused after parsing, with the table's reason.
+    RenderSettings rs;
+    rs.missing_textures = "ask";
+    app.add_option("scene", o.scene, "Scene file (.sc or CSCI 1230 .json) to open and render");
+    for (const Setting& setting : render_settings_table()) cli::add_setting_option(app, rs, setting);
     app.add_flag("--fit", o.fit_window, "Render at the size of the image area");
-    auto* depth_option = app.add_option("--max-depth", o.settings.integrator.max_depth,
-                                        "Recursion limit for reflection/refraction (path mode: bounces, default 64)")
-        ->check(CLI::Range(0, 1000));
-    app.add_option("--aa", o.settings.sampling.aa, "Anti-aliasing: N x N rays per pixel, averaged")
-        ->check(CLI::Range(1, Sampler::kMaxAa));
-    auto* spp_option = app.add_option("--spp", o.settings.sampling.spp,
-                   "Samples per pixel (per sub-pixel with --aa) for soft shadows, depth of field and gloss; they "
-                   "arrive in passes")
-        ->check(CLI::Range(1, Sampler::kMaxSpp));
-    app.add_option("--aa-threshold", o.settings.sampling.aa_threshold,
-                   "Adaptive anti-aliasing: only where a pixel differs from a neighbour by more (0-1); 0 = everywhere")
-        ->check(CLI::Range(0.0f, 1.0f))
-        ->check(CLI::Validator(
-            [](std::string& s) { return std::isfinite(std::strtof(s.c_str(), nullptr)) ? "" : "not a finite number: " + s; },
-            "FINITE"));
-    app.add_option("--mode", mode_name, "Render mode (path: physically based path tracing)")
-        ->check(CLI::IsMember({"whitted", "raycast", "normals", "depth", "path"}));
-    app.add_option("--threads", o.settings.threads, "Worker threads (0 = all hardware threads)")
-        ->check(CLI::Range(0, 1024));
-    std::string stage = "illuminate";
-    app.add_option("--cs1230-stage", stage,
-                   "Brown CSCI 1230 JSON scenes: draw them as the course's Intersect or Illuminate project")
-        ->check(CLI::IsMember({"illuminate", "intersect"}));
     app.add_flag("--watch", o.watch, "Reload and render again when the scene file changes on disk");
-    // One directory per --texture-path (repeat it for more): a list would swallow the scene after it.
-    app.add_option("--texture-path", o.texture_dirs, "Extra directory to look for textures in (repeat for more)")
-        ->allow_extra_args(false)
-        ->default_str("");
-    app.add_option("--missing-textures", missing, "A texture that cannot be found: ask for the file, or draw a checkerboard")
-        ->check(CLI::IsMember({"ask", "checker"}));
-    app.add_flag("--lenient", o.lenient, "Skip unknown keywords and object types with a warning");
-    app.add_option("--time", o.time, "Scene time t of 'velocity' and 'angularrate' (also Render ▸ Scene time; 0 = the still image)")
-        ->check(CLI::Validator(
-            [](std::string& s) { return std::isfinite(std::strtof(s.c_str(), nullptr)) ? "" : "not a finite number: " + s; },
-            "FINITE"));
     auto* window_size = app.add_option("--window-size", [&o](const CLI::results_t& r) {
         return std::sscanf(r[0].c_str(), "%dx%d", &o.window_width, &o.window_height) == 2 && o.window_width > 0 &&
                o.window_height > 0;
@@ -125,9 +95,18 @@ int main(int argc, char** argv) {
         std::cerr << "whitted-view: error: cannot write '" << o.screenshot << "': use .png, .bmp, .ppm, .jpg or .jpeg\n";
         return 1;
     }
-    if (o.settings.sampling.aa_threshold > 0.0f && o.settings.sampling.spp > 1) {
-        std::cerr << "whitted-view: error: --aa-threshold compares the colours of pixel centres, which --spp > 1 does "
-                     "not take; use one or the other\n";
+    if (std::string problem = cli::collect_given(app, rs, Frontend::Viewer, "whitted-view"); !problem.empty()) {
+        std::cerr << "whitted-view: error: " << problem << "\n";
+        return 1;
+    }
+    apply_mode_defaults(rs, !o.scene.empty() && cs1230::is_json_scene_file(o.scene));
+    if (std::string problem = validate(rs); !problem.empty()) {
+        std::cerr << "whitted-view: error: " << problem << "\n";
+        return 1;
+    }
+    if (rs.noise_threshold > 0.0f) {  // --aa-threshold with --spp > 1 means adaptive sampling (validate)
+        std::cerr << "whitted-view: error: --aa-threshold with --spp > 1 is adaptive sampling: "
+                  << find_setting("noise-threshold")->why_refused(Frontend::Viewer) << "\n";
         return 1;
     }
     if (!o.screenshot.empty()) o.exit_when_done = true;
@@ -138,17 +117,17 @@ int main(int argc, char** argv) {
     }
     o.window_size_given = window_size->count() > 0;
     // Render settings on the command line replace the remembered ones (all of them).
-    for (const char* name : {"--width", "--height", "--fit", "--max-depth", "--aa", "--spp", "--mode"})
-        o.settings_given = o.settings_given || app.get_option(name)->count() > 0;
+    for (const char* name : {"width", "height", "max-depth", "aa", "spp", "mode"})
+        o.settings_given = o.settings_given || rs.is_given(name);
+    o.settings_given = o.settings_given || o.fit_window;
     // Scripts and tests get what they ask for, never what an earlier run left behind.
     if (o.exit_when_done || !o.ready_file.empty()) o.settings_given = true;
-    o.settings.integrator.mode = *parse_render_mode(mode_name);
-    o.settings.integrator.cs1230_stage = *cs1230::parse_stage(stage);
-    if (o.settings.integrator.mode == RenderMode::Path) {  // §9.2: a path tracer's defaults
-        if (spp_option->count() == 0) o.settings.sampling.spp = 64;
-        if (depth_option->count() == 0) o.settings.integrator.max_depth = 64;
-    }
-    o.checker_textures = missing == "checker";
+    o.settings = make_render_job(rs);
+    o.render = rs;
+    o.lenient = rs.lenient;
+    o.time = rs.time;
+    o.texture_dirs = rs.texture_dirs;
+    o.checker_textures = rs.missing_textures == "checker";
 
     install_signal_thread();
     Display* display = open_display_or_explain();

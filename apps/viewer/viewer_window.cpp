@@ -138,7 +138,7 @@ void ViewerWindow::layout() {
 // ---------------------------------------------------------------------------------------------
 
 LoadOptions ViewerWindow::load_options() const {
-    LoadOptions o;
+    LoadOptions o = make_load_options(options_.render);  // --untrusted's confinement and limits, --max-memory
     o.lenient = options_.lenient;
     o.time = options_.time;
     o.threads = settings_->threads();  // the BVH build uses the same threads as the render

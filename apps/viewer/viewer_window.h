@@ -15,6 +15,7 @@
 #include "camera_session.h"
 #include "preferences.h"
 #include "render_controller.h"
+#include "session/render_settings.h"
 #include "texture_memory.h"
 
 class Fl_Menu_Bar;
@@ -32,6 +33,7 @@ class WatchTimer;
 struct ViewerOptions {
     std::string scene;                       // "" = start empty
     RenderJob settings;
+    RenderSettings render;                   // the command line's settings (its limits: --untrusted, --max-memory)
     bool fit_window = false;                 // image size follows the image area
     bool watch = false;                      // reload when the scene file changes on disk
     bool lenient = false;

@@ -9,7 +9,7 @@ SecondaryRecord& ShadingRecorder::record(const Pending& p) {
 
 void ShadingRecorder::hit(const Ray& ray, const Hit& hit, const Surface& s, const glm::vec3& n, bool outside,
                           int depth) {
-    if (depth > kDeepestNode) {
+    if (nodes.size() >= kMaxNodes) {
         open_.push_back(-1);
         return;
     }

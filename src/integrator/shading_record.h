@@ -75,13 +75,14 @@ struct NoShadingRecorder {
     static constexpr bool kRecords = false;
 };
 
-// The recorder the inspector uses: one ShadeNode per hit down to kDeepestNode, nodes[0] the camera
-// ray's (if it hit), with its lights (deeper hits' lights are not kept: the inspector reports the
-// camera ray's hit and where its own rays went, and a tree of thousands of hits with every light's
-// term each would take gigabytes).
+// The recorder the inspector uses: one ShadeNode per hit, nodes[0] the camera ray's (if it hit),
+// each with its lights' terms (the ray tree draws every bounce's shadow rays). Bounded: a glass
+// tree of 2^depth hits, or thousands of lights at every hit, would take gigabytes; past
+// kMaxNodes hits, or kMaxLightTerms terms below the camera ray's hit, the rest is not kept.
 class ShadingRecorder {
 public:
-    static constexpr int kDeepestNode = 1;
+    static constexpr std::size_t kMaxNodes = 4096;
+    static constexpr std::size_t kMaxLightTerms = std::size_t(1) << 16;
     std::vector<ShadeNode> nodes;
     bool camera_ray_missed = false;
     glm::vec3 background{0.0f};  // the camera ray's colour when it missed
@@ -94,7 +95,10 @@ public:
         open().ambient = ambient;
     }
     void light(const LightTerm& term) {
-        if (recording() && open().depth == 0) open().lights.push_back(term);
+        if (!recording()) return;
+        if (open().depth > 0 && light_terms_ >= kMaxLightTerms) return;
+        if (open().depth > 0) ++light_terms_;
+        open().lights.push_back(term);
     }
     void depth_limit() {
         if (recording()) open().depth_limit = true;
@@ -110,12 +114,13 @@ public:
     static constexpr bool kRecords = true;
 
 private:
-    std::vector<int> open_;  // the hits being shaded, innermost last (-1: one too deep to keep)
+    std::vector<int> open_;  // the hits being shaded, innermost last (-1: one past the bound, not kept)
     struct Pending {
         int node;  // whose ray
         SecondaryKind kind;
     };
     std::vector<Pending> pending_;  // secondary rays being traced, innermost last
+    std::size_t light_terms_ = 0;   // kept below the camera ray's hit
     SecondaryRecord& record(const Pending& p);
     bool recording() const { return open_.back() >= 0; }
     ShadeNode& open() { return nodes[std::size_t(open_.back())]; }

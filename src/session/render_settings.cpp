@@ -12,7 +12,12 @@ namespace whitted {
 namespace {
 
 using S = RenderSettings;
-constexpr unsigned kMpi = unsigned(Frontend::Mpi);
+constexpr unsigned kMpi = unsigned(Frontend::Mpi), kViewer = unsigned(Frontend::Viewer);
+// The viewer renders passes until the user stops it, over every pixel: no adaptive sampling or
+// time budget yet (those run in whitted's session).
+constexpr const char* kViewerRendersUntilStopped =
+    "whitted-view renders passes over every pixel until you stop it (Esc); adaptive sampling and time limits "
+    "are whitted's";
 
 }  // namespace
 
@@ -45,10 +50,12 @@ const std::vector<Setting>& render_settings_table() {
         {"noise-threshold", "Noise threshold",
          "Adaptive sampling: a pixel takes no more samples once its error estimate is below this (e.g. 0.01; 0 = "
          "off); needs --spp > 1",
-         &S::noise_threshold, 0, 1, {}, true, kMpi,
-         "adaptive sampling needs passes over the whole image, and whitted-mpi renders each tile's samples at once"},
+         &S::noise_threshold, 0, 1, {}, true, kMpi | kViewer,
+         "adaptive sampling needs passes over the whole image, and whitted-mpi renders each tile's samples at once",
+         kViewerRendersUntilStopped},
         {"min-spp", "Min SPP", "Adaptive sampling: the samples every pixel takes before it may stop", &S::min_spp, 1,
-         Sampler::kMaxSpp, {}, true, kMpi, "whitted-mpi has no adaptive sampling (see --noise-threshold)"},
+         Sampler::kMaxSpp, {}, true, kMpi | kViewer, "whitted-mpi has no adaptive sampling (see --noise-threshold)",
+         kViewerRendersUntilStopped},
         {"time", "Scene time",
          "Scene time t: 'velocity x y z' moves by t·(x, y, z), 'angularrate ax ay az r' turns by r·t degrees (0 = "
          "the still image)",
@@ -73,13 +80,14 @@ const std::vector<Setting>& render_settings_table() {
         {"timeout", "Timeout",
          "Stop after this many seconds (load and render), keeping the last whole pass (or the tiles of the first) as "
          "NAME.partial.EXT, exit 4; 0 = never",
-         &S::timeout, 0, 1e7, {}, false},
+         &S::timeout, 0, 1e7, {}, false, kViewer, "", kViewerRendersUntilStopped},
         {"time-limit", "Time limit",
          "Render whole passes while they fit in this many seconds (load and write included), then write the complete "
          "image at the samples reached, exit 0; 0 = none",
-         &S::time_limit, 0, 1e7, {}, false, kMpi,
+         &S::time_limit, 0, 1e7, {}, false, kMpi | kViewer,
          "a time budget renders whole passes over the image, and whitted-mpi renders each tile's samples at once; "
-         "use --timeout (or the batch system's limit)"},
+         "use --timeout (or the batch system's limit)",
+         kViewerRendersUntilStopped},
         {"cs1230-stage", "CS1230 stage",
          "For Brown CSCI 1230 JSON scenes: draw them as the course's Intersect project (directional lights, no "
          "shadows, reflections or textures) or Illuminate (everything)",

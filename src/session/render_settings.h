@@ -59,8 +59,12 @@ struct Setting {
     bool changes_pixels = false;        // part of what a checkpoint's pixels depend on
     // Front ends that refuse it, and why (a sentence for their error message).
     unsigned refused_by = 0;
-    const char* refusal = "";
+    const char* refusal = "";         // whitted-mpi's reason
+    const char* viewer_refusal = "";  // whitted-view's, where it differs
     bool refused(Frontend f) const { return (refused_by & unsigned(f)) != 0; }
+    const char* why_refused(Frontend f) const {
+        return f == Frontend::Viewer && *viewer_refusal ? viewer_refusal : refusal;
+    }
 };
 
 const std::vector<Setting>& render_settings_table();

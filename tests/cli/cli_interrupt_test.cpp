@@ -56,9 +56,10 @@ TEST(CliInterrupt, TheFirstCtrlCStopsADeepRayTree) {
 TEST(CliInterrupt, APixelOfMillionsOfSamplesStopsAndNothingRenderedIsNotWritten) {
     const std::string dir = test::make_temp_dir();
     const std::string scene = test::write_file(dir, "s.sc", kEndlessScene);
-    // Two tiles of 32 pixels (a thread each), each pixel 256 × 65536 samples.
+    // Two tiles of 32 pixels (a thread each), each pixel 256 × 65536 samples, each sample a tree of
+    // 2^38 rays: not one tile of the first pass (256 samples a pixel) ends.
     test::BackgroundProcess p({test::cli_path(), scene, "-o", dir + "/o.png", "--width", "64", "--height", "1",
-                               "--aa", "16", "--spp", "65536", "--max-depth", "3", "--threads", "2", "-q"},
+                               "--aa", "16", "--spp", "65536", "--max-depth", "38", "--threads", "2", "-q"},
                               dir + "/log.txt");
     ASSERT_TRUE(p.wait_until_it_catches(SIGTERM, 30s)) << p.output();
     ASSERT_TRUE(p.wait_until_a_second_thread_ran(50ms, 60s)) << "the render did not start\n" << p.output();

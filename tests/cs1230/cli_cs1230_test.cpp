@@ -135,10 +135,10 @@ TEST(Cs1230Cli, UntrustedConfinesTexturesAndMeshesToTheParentOfTheFilesFolder) {
     EXPECT_EQ(run(R"("type": "mesh", "meshFile": "meshes/cube.obj")").exit_code, 0);
     const test::ProcessResult texture = run(R"("type": "cube", "textureFile": "../../secret.png")");
     EXPECT_EQ(texture.exit_code, 2) << texture.output;
-    EXPECT_NE(texture.output.find("outside the scene's folder"), std::string::npos) << texture.output;
+    EXPECT_NE(texture.output.find("not found inside the scene's folder"), std::string::npos) << texture.output;
     const test::ProcessResult mesh = run(R"("type": "mesh", "meshFile": "../../secret.obj")");
     EXPECT_EQ(mesh.exit_code, 2) << mesh.output;
-    EXPECT_NE(mesh.output.find("outside the scene's folder"), std::string::npos) << mesh.output;
+    EXPECT_NE(mesh.output.find("not found inside the scene's folder"), std::string::npos) << mesh.output;
     const test::ProcessResult absolute = run(R"("type": "mesh", "meshFile": ")" + root + R"(/secret.obj")");
     EXPECT_EQ(absolute.exit_code, 2) << absolute.output;
     EXPECT_NE(absolute.output.find("an absolute path, refused"), std::string::npos) << absolute.output;

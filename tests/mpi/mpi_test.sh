@@ -143,7 +143,7 @@ killed_rank_resume)
     # pixels is in the key, --time too, so the resume would mix two frames.
     "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/other.png" "${SIZE[@]}" --tile-size 8 \
         --time 0.5 --resume "$out/ck" >"$out/log" 2>&1 && fail "a checkpoint of another --time was used"
-    grep -q "was made from another scene, textures or render options" "$out/log" || { cat "$out/log"; fail "no message"; } ;;
+    grep -q "was made from another scene, textures, meshes or render options" "$out/log" || { cat "$out/log"; fail "no message"; } ;;
 scene_error)
     # One error (a colour with two numbers), so that one message per rank would be seen as three.
     printf 'camera [ eye 0 0 5 ]\nmastersubgraph root [ trans [\n  object sphere [ diffuse 1 1 ]\n] ]\n' >"$out/bad.sc"

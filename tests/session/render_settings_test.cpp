@@ -22,6 +22,7 @@ std::string other_value(const Setting& s) {
     if (name == "timeout" || name == "time-limit") return "100";
     if (name == "aa-threshold" || name == "noise-threshold") return "0.25";
     if (name == "time") return "0.5";
+    if (!s.choices.empty()) return s.choices.back();  // the defaults come first
     if (std::holds_alternative<bool RenderSettings::*>(s.field)) return "";
     return std::to_string(int(s.min) + 2);  // ints: a value in range other than the default
 }
@@ -106,6 +107,18 @@ TEST(RenderSettings, EveryFrontEndTakesEverySettingOrRefusesItWithAReason) {
         if (std::string(setting.name) != "height") args.insert(args.end(), {"--height", "6"});
         const auto r = test::run_process(args);
         EXPECT_EQ(r.exit_code, 0) << r.output;
+#ifdef WHITTED_VIEWER_PATH
+        // whitted-view refuses what it cannot honour, before it opens a window, with the table's reason.
+        if (setting.refused(Frontend::Viewer)) {
+            std::vector<std::string> view = {WHITTED_VIEWER_PATH, scene, flag};
+            if (const std::string v = other_value(setting); !v.empty()) view.push_back(v);
+            const auto v = test::run_process(view);
+            EXPECT_EQ(v.exit_code, 1) << v.output;
+            EXPECT_NE(v.output.find(flag + " is not for this program: " + setting.why_refused(Frontend::Viewer)),
+                      std::string::npos)
+                << v.output;
+        }
+#endif
 #ifdef WHITTED_MPI_PATH
         if (!setting.refused(Frontend::Mpi)) {
             EXPECT_NE(mpi_help.find(flag), std::string::npos) << "whitted-mpi does not take " << flag;
