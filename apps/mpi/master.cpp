@@ -266,7 +266,7 @@ int Master::run() {
         std::cerr << "whitted-mpi: error: the time limit of " << timeout_seconds(s.options->settings)
                   << " s (--timeout) ran out: wrote the " << schedule.done_count() << " of " << schedule.tile_count()
                   << " tiles rendered so far to " << written << " (" << s.options->output << " was not written)\n";
-        code = cli::kExitTimeout;
+        code = cli::kExitInterrupted;  // as a batch system's SIGTERM (4 means two ranks disagreed)
     } else if (!schedule.all_done()) {
         std::cerr << "whitted-mpi: " << why_stopped() << ": wrote the " << schedule.done_count() << " of "
                   << schedule.tile_count() << " tiles rendered so far to " << written << " (" << s.options->output

@@ -128,6 +128,7 @@ SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic
         } else {
             s.loaded = !file.ok() ? load_scene(o.scene_path, lo) : load_scene_text(file.bytes, o.scene_path, lo);
             s.code = cli::report_load(s.loaded, o, "whitted-mpi", deadline.timed_out() ? "--timeout" : nullptr);
+            if (s.code == cli::kExitTimeout) s.code = cli::kExitInterrupted;  // here 4 means two ranks disagreed
         }
         if (s.code == 0) payload = pack(file.bytes, s.loaded.texture_files, s.loaded.mesh_files);
         s.loaded.texture_files.clear();
