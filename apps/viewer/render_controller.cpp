@@ -281,26 +281,6 @@ void RenderController::run(std::shared_ptr<Job> job) {
     finish();
 }
 
-Image enlarge_nearest(const Image& small, int width, int height) {
-    Image big(width, height);
-    if (small.width <= 0 || small.height <= 0) return big;
-    for (int y = 0; y < height; ++y) {
-        const int sy = int(std::int64_t(y) * small.height / height);
-        for (int x = 0; x < width; ++x) {
-            const int sx = int(std::int64_t(x) * small.width / width);
-            std::memcpy(&big.rgb[(std::size_t(y) * width + x) * 3], &small.rgb[(std::size_t(sy) * small.width + sx) * 3], 3);
-        }
-    }
-    return big;
-}
-
-std::vector<int> sample_passes(const SamplingSettings& sampling) {
-    const int n = sampling.samples_per_pixel();
-    if (sampling.adaptive()) return {n};
-    std::vector<int> ends{std::min(n, Sampler(sampling.aa, 1).samples_per_pixel())};
-    while (ends.back() < n) ends.push_back(std::min(n, 2 * ends.back()));
-    return ends;
-}
 
 RenderStatus RenderController::status() const {
     std::lock_guard lock(mutex_);

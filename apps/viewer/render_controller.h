@@ -17,6 +17,7 @@
 #include "integrator/render_mode.h"
 #include "render/load_scene.h"
 #include "render/renderer.h"
+#include "session/session.h"
 
 namespace whitted::viewer {
 
@@ -34,10 +35,6 @@ const char* state_name(RenderState state);
 // True while a job is loading or rendering.
 inline bool is_busy(RenderState s) { return s == RenderState::Loading || s == RenderState::Rendering; }
 
-// The passes in which a job's samples arrive, so the whole image shows early and then refines:
-// one sample per sub-pixel cell first (aa × aa per pixel), then each pass doubles the samples done.
-// Adaptive anti-aliasing is one pass. Returns the sample index each pass ends at.
-std::vector<int> sample_passes(const SamplingSettings& sampling);
 
 struct RenderStatus {
     RenderState state = RenderState::Idle;
@@ -61,10 +58,8 @@ struct RenderStatus {
     std::vector<std::string> texture_files;  // the files its textures were read from (LoadResult::texture_paths)
 };
 
-// The resolutions of the coarse frames a moving camera gets before the full image, as divisors.
-inline constexpr int kPreviewDivisors[] = {8, 4, 2};
-// The nearest-neighbour enlargement of `small` to width × height (a coarse frame shown full size).
-Image enlarge_nearest(const Image& small, int width, int height);
+// The coarse frames' divisors (kPreviewDivisors) and their enlargement (enlarge_nearest) are the
+// session's (session/session.h).
 
 class RenderController {
 public:
