@@ -46,7 +46,7 @@ void Preferences::recall_settings(RenderJob& s, bool& fit) const {
     if (s.sampling.spp > 1) s.sampling.aa_threshold = 0.0f;
 }
 
-void Preferences::save(int window_w, int window_h, const RenderJob& s, bool fit) const {
+void Preferences::save(int window_w, int window_h, const RenderJob* settings, bool fit) const {
     Fl_Preferences prefs = user_preferences();
     Fl_Preferences recent(prefs, "recent");
     recent.deleteAllEntries();
@@ -54,14 +54,17 @@ void Preferences::save(int window_w, int window_h, const RenderJob& s, bool fit)
     Fl_Preferences window(prefs, "window");
     window.set("width", window_w);
     window.set("height", window_h);
-    Fl_Preferences st(prefs, "settings");
-    st.set("width", s.width);
-    st.set("height", s.height);
-    st.set("depth", s.integrator.max_depth);
-    st.set("aa", s.sampling.aa);
-    st.set("spp", s.sampling.spp);
-    st.set("mode", int(s.integrator.mode));
-    st.set("fit", int(fit));
+    if (settings) {
+        const RenderJob& s = *settings;
+        Fl_Preferences st(prefs, "settings");
+        st.set("width", s.width);
+        st.set("height", s.height);
+        st.set("depth", s.integrator.max_depth);
+        st.set("aa", s.sampling.aa);
+        st.set("spp", s.sampling.spp);
+        st.set("mode", int(s.integrator.mode));
+        st.set("fit", int(fit));
+    }
     prefs.flush();
 }
 

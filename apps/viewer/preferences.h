@@ -30,7 +30,9 @@ public:
     void fill_recent_menu(Fl_Menu_Bar& menu, const char* submenu, std::function<void(const std::string&)> open);
 
     // Writes them all: the recent scenes, the window's size, the settings shown and Fit window.
-    void save(int window_w, int window_h, const RenderJob& settings, bool fit) const;
+    // `settings` (with `fit`) only when the user chose them in the window: a one-off command-line
+    // option is not remembered (null: the remembered ones stay as they are).
+    void save(int window_w, int window_h, const RenderJob* settings, bool fit) const;
 
 private:
     std::vector<std::string> recent_;

@@ -8,6 +8,7 @@
 #include <ostream>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include <FL/Fl.H>
 #include <FL/Fl_Button.H>
@@ -18,6 +19,7 @@
 #include <FL/Fl_Window.H>
 #include <FL/fl_ask.H>
 
+#include "session/render_settings.h"
 #include "viewer_util.h"
 
 namespace whitted::viewer {
@@ -49,7 +51,8 @@ SettingsBar* SettingsBar::active_ = nullptr;
 
 // Made at their final sizes; layout() places them. Changing one renders again (after a moment, so
 // that typing a number renders once).
-SettingsBar::SettingsBar(const RenderJob& settings, bool fit) : base_(settings) {
+SettingsBar::SettingsBar(const RenderJob& settings, bool fit, std::set<std::string> given)
+    : base_(settings), given_(std::move(given)) {
     const int h = 24;
     auto tool = [this](Fl_Widget* w, const char* id, int gap) {
         const Fl_Align a = w->align();
@@ -79,7 +82,12 @@ SettingsBar::SettingsBar(const RenderJob& settings, bool fit) : base_(settings) 
         s->step(1);
         s->value(value);
         s->tooltip(tip);
-        s->callback(changed_cb, this);
+        s->callback([](Fl_Widget* w, void* v) {  // the user's choice: a mode change leaves it alone
+            SettingsBar* self = bar(v);
+            for (const Tool& t : self->tools_)
+                if (t.widget == w) self->given_.insert(std::string(t.id) == "depth" ? "max-depth" : t.id);
+            self->changed();
+        }, this);
         tool(s, id, gap);
         return s;
     };
@@ -106,7 +114,10 @@ SettingsBar::SettingsBar(const RenderJob& settings, bool fit) : base_(settings) 
     mode_->value(int(st.integrator.mode));
     mode_->tooltip("whitted: the lab's lighting; raycast: unlit colour; normals, depth: debugging views; path: "
                    "physically based path tracing (set SPP to 64 or more)");
-    mode_->callback(changed_cb, this);
+    mode_->callback([](Fl_Widget*, void* v) {
+        bar(v)->apply_mode_defaults();
+        bar(v)->changed();
+    }, this);
     tool(mode_, "mode", 8);
     aa_ = spinner("aa", "AA", 8, 40, 1, Sampler::kMaxAa, st.sampling.aa,
                   "Anti-aliasing: N x N rays per pixel, averaged (1 = one ray through the pixel centre)");
@@ -179,6 +190,15 @@ void SettingsBar::add_menu_items(Fl_Menu_Bar& m) {
           FL_MENU_DIVIDER);
     // The load options of the command line.
     m.add("&Render/AA thres&hold...", 0, [](Fl_Widget*, void* v) { bar(v)->ask_aa_threshold(); }, this);
+}
+
+void SettingsBar::apply_mode_defaults() {
+    RenderSettings s;
+    s.mode = kModes[std::max(0, mode_->value())];
+    s.given = given_;
+    whitted::apply_mode_defaults(s);  // the table's: path gets 64 samples and 64 bounces
+    if (!s.is_given("spp")) spp_->value(s.spp);
+    if (!s.is_given("max-depth")) depth_->value(s.max_depth);
 }
 
 RenderJob SettingsBar::job(int area_w, int area_h) {

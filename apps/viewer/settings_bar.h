@@ -5,6 +5,8 @@
 // command line gave). The one place where widgets meet RenderJob.
 #include <functional>
 #include <iosfwd>
+#include <set>
+#include <string>
 #include <vector>
 
 #include "render/render_job.h"
@@ -22,7 +24,9 @@ namespace whitted::viewer {
 class SettingsBar {
 public:
     // Makes the tool bar's widgets in the current group (the window's), showing `settings` and `fit`.
-    SettingsBar(const RenderJob& settings, bool fit);
+    // `given`: the settings the user chose on the command line (the table's names); with those chosen
+    // here, a change of mode leaves them alone and gives the others the mode's defaults.
+    SettingsBar(const RenderJob& settings, bool fit, std::set<std::string> given = {});
     ~SettingsBar();
     SettingsBar(const SettingsBar&) = delete;
     SettingsBar& operator=(const SettingsBar&) = delete;
@@ -61,10 +65,12 @@ private:
     static void settled_cb(void* self);
     void changed();
     void ask_aa_threshold();
+    void apply_mode_defaults();  // the chosen mode's samples and depth where the user set none
     bool editing() const;  // the keyboard focus is in one of the spinners
     static int dispatch(int event, Fl_Window* window);
 
     RenderJob base_;  // what the tools do not show comes from here
+    std::set<std::string> given_;  // settings the user chose (command line or these tools)
     Fl_Button *render_ = nullptr, *stop_ = nullptr;
     Fl_Spinner *width_ = nullptr, *height_ = nullptr, *depth_ = nullptr, *aa_ = nullptr, *spp_ = nullptr,
                *threads_ = nullptr;

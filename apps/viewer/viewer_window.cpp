@@ -50,13 +50,15 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     RenderJob settings = options_.settings;
     bool fit = options_.fit_window;
     if (!options_.settings_given) preferences_.recall_settings(settings, fit);
+    settings_chosen_ = !options_.settings_given;
 
     const int W = w();
     menu_ = new Fl_Menu_Bar(0, 0, W, kMenuH);
-    settings_ = std::make_unique<SettingsBar>(settings, fit);
+    settings_ = std::make_unique<SettingsBar>(settings, fit, options_.settings_given ? options_.render.given : std::set<std::string>{});
     settings_->on_render = [this] { render(); };
     settings_->on_stop = [this] { stop(); };
     settings_->on_change = [this] {
+        settings_chosen_ = true;  // the user's choice: remembered
         if (!scene_.empty()) render();
     };
     build_menus();
@@ -203,7 +205,10 @@ void ViewerWindow::quit() {
 
 int ViewerWindow::exit_code() const { return report_->exit_code(); }
 
-void ViewerWindow::remember() { preferences_.save(w(), h(), settings_->shown(), settings_->fit()); }
+void ViewerWindow::remember() {
+    const RenderJob shown = settings_->shown();
+    preferences_.save(w(), h(), settings_chosen_ ? &shown : nullptr, settings_->fit());
+}
 
 // Shown in the status bar (and, if an error or warning, in the messages panel) at the next poll.
 void ViewerWindow::set_message(const std::string& text) { extra_message_ = text; }

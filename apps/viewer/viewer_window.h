@@ -89,7 +89,7 @@ private:
     void fit_to_area();
     void render_view();  // renders with the camera on screen, coarse frames first
     void ask_for_textures(const RenderStatus& st);
-    void remember();  // recent files, window size and settings into the preferences
+    void remember();  // recent files, window size and (if the user chose them here) settings into the preferences
     void describe(std::ostream& out) const;  // the ready file's lines
     LoadOptions load_options() const;
     void set_message(const std::string& text);
@@ -118,6 +118,7 @@ private:
     int area_w_ = 0, area_h_ = 0;  // the image area's size at the last layout
     RenderStatus shown_;  // the status the window was last brought up to date with (poll)
     bool quitting_ = false;
+    bool settings_chosen_ = false;  // the settings are the user's (recalled, or changed in the window): saved on quit
     std::string extra_message_;  // a message of the viewer's own (e.g. a failed save)
 };
 
