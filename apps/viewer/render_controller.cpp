@@ -213,6 +213,8 @@ void RenderController::run(std::shared_ptr<Job> job) {
             image_ = Image(s.width, s.height);
             ++image_version_;
         }
+        linear_ = LinearImage{s.width, s.height,
+                              std::vector<glm::vec3>(std::size_t(s.width) * std::size_t(s.height)), {}};
         shown_ = Shown{scene, s, job->path};
         shown_.settings.cancel = nullptr;
         shown_.settings.on_tile = nullptr;
@@ -255,6 +257,7 @@ void RenderController::run(std::shared_ptr<Job> job) {
             std::lock_guard lock(mutex_);
             if (!is_current()) return;
             film.write_to(image_, t);
+            film.write_to(linear_, t);
             ++status_.tiles_done;
             if (status_.tiles_done == s.tile_count()) status_.preview_divisor = 1;  // the first full pass is in
             ++image_version_;
@@ -300,6 +303,11 @@ bool RenderController::copy_image_if_changed(Image& out, std::uint64_t& version)
 Image RenderController::image() const {
     std::lock_guard lock(mutex_);
     return image_;
+}
+
+LinearImage RenderController::linear_image() const {
+    std::lock_guard lock(mutex_);
+    return linear_;
 }
 
 RenderController::Shown RenderController::shown() const {

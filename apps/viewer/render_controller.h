@@ -89,6 +89,9 @@ public:
     // Copies the image if it changed since `version` (0 = never seen); returns whether it did.
     bool copy_image_if_changed(Image& out, std::uint64_t& version) const;
     Image image() const;
+    // The current job's mean colours, unclamped (what .exr and .pfm keep): the tiles of its passes
+    // rendered so far at full size (coarse frames are not in it), black elsewhere.
+    LinearImage linear_image() const;
 
     // The scene and settings of the image being shown (the last job that began rendering): what
     // the pixel inspector looks at. Null scene before any job rendered.
@@ -127,6 +130,7 @@ private:
     RenderStatus status_;
     std::chrono::steady_clock::time_point started_{};
     Image image_;
+    LinearImage linear_;  // the same pixels unclamped (full-size passes only)
     Shown shown_;  // what image_ is a render of
     std::uint64_t image_version_ = 0;
     std::uint64_t next_job_ = 0;

@@ -61,24 +61,25 @@ void ViewerWindow::save_image_as() {
         return;
     }
     // In the scene's folder, named after it.
-    const FileChoice choice =
-        choose_file_to_save("Save image as", "PNG (*.png)\tBMP (*.bmp)\tPPM (*.ppm)\tJPEG (*.{jpg,jpeg})", scene_dir(),
-                            scene_.empty() ? "image.png" : fs::path(scene_).stem().string() + ".png");
+    // .exr and .pfm keep the film's linear values, unclamped, as whitted -o does (§7).
+    const FileChoice choice = choose_file_to_save(
+        "Save image as", "PNG (*.png)\tBMP (*.bmp)\tPPM (*.ppm)\tJPEG (*.{jpg,jpeg})\tOpenEXR (*.exr)\tPFM (*.pfm)",
+        scene_dir(), scene_.empty() ? "image.png" : fs::path(scene_).stem().string() + ".png");
     if (choice.path.empty()) return;
     std::string path = choice.path;
     if (fs::path(path).extension().empty()) {  // the extension of the filter shown (PNG for All Files)
-        static const char* exts[] = {".png", ".bmp", ".ppm", ".jpg"};
-        path += exts[choice.filter >= 0 && choice.filter < 4 ? choice.filter : 0];
+        static const char* exts[] = {".png", ".bmp", ".ppm", ".jpg", ".exr", ".pfm"};
+        path += exts[choice.filter >= 0 && choice.filter < 6 ? choice.filter : 0];
     }
     if (!is_supported_output(path)) {
-        set_message("error: cannot write '" + path + "': use .png, .bmp, .ppm, .jpg or .jpeg");
+        set_message("error: cannot write '" + path + "': use .png, .bmp, .ppm, .jpg, .jpeg, .exr or .pfm");
         return;
     }
     // The image as it is now, when the dialog has closed (the render went on meanwhile), not as it
     // was when it opened; a render still running is saved as it stands, and the message says so.
-    const Image img = controller_.image();
     const bool partial = is_busy(controller_.status().state);
-    std::string err = write_image(img, path);
+    const std::string err = is_linear_output(path) ? write_linear_image(controller_.linear_image(), path)
+                                                   : write_image(controller_.image(), path);
     set_message(!err.empty() ? "error: " + err
                 : partial    ? "saved " + path + " while still rendering: the image is partial"
                              : "saved " + path);

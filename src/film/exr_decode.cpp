@@ -55,7 +55,7 @@ std::string decode_exr(std::string_view bytes, const ImageLimits& limits, Linear
             if (const Imf::Channel* c = channels.findChannel(name); c && (c->xSampling != 1 || c->ySampling != 1))
                 return std::string("the ") + name + " channel is subsampled, which is not supported";
 
-        LinearImage image{int(w), int(h), std::vector<glm::vec3>(std::size_t(w) * std::size_t(h), glm::vec3(0.0f))};
+        LinearImage image{int(w), int(h), std::vector<glm::vec3>(std::size_t(w) * std::size_t(h), glm::vec3(0.0f)), {}};
         Imf::FrameBuffer fb;
         const std::size_t px = sizeof(glm::vec3), row = px * std::size_t(w);
         char* base = reinterpret_cast<char*>(image.rgb.data());

@@ -27,7 +27,7 @@ Image Film::to_image() const {
 }
 
 LinearImage Film::to_linear() const {
-    LinearImage image{width_, height_, std::vector<glm::vec3>(std::size_t(width_) * std::size_t(height_), glm::vec3(0.0f))};
+    LinearImage image{width_, height_, std::vector<glm::vec3>(std::size_t(width_) * std::size_t(height_), glm::vec3(0.0f)), {}};
     for (int y = region_.y0; y < region_.y1; ++y)
         for (int x = region_.x0; x < region_.x1; ++x)
             image.rgb[std::size_t(y) * std::size_t(width_) + std::size_t(x)] = at(x, y).value();
@@ -47,6 +47,12 @@ void Film::write_to(Image& image, const PixelRegion& r) const {
             p[2] = to_byte(c.z);
         }
     }
+}
+
+void Film::write_to(LinearImage& image, const PixelRegion& r) const {
+    for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x)
+            image.rgb[std::size_t(y) * std::size_t(image.width) + std::size_t(x)] = at(x, y).value();
 }
 
 }  // namespace whitted

@@ -58,6 +58,8 @@ public:
     LinearImage to_linear() const;
     // Writes the 8-bit values of the pixels of `r` into `image` (of the film's size).
     void write_to(Image& image, const PixelRegion& r) const;
+    // Writes the mean colours of the pixels of `r`, unclamped, into `image` (of the film's size).
+    void write_to(LinearImage& image, const PixelRegion& r) const;
 
 private:
     std::size_t index(int x, int y) const {

@@ -54,7 +54,7 @@ std::string decode_pfm(std::string_view b, const ImageLimits& limits, LinearImag
         return "the file ends before its last pixel (truncated: " + std::to_string(b.size()) + " of " +
                std::to_string(i + need) + " bytes)";
     const bool swap = (scale < 0) != (std::endian::native == std::endian::little);
-    LinearImage image{int(w), int(h), std::vector<glm::vec3>(std::size_t(w) * std::size_t(h))};
+    LinearImage image{int(w), int(h), std::vector<glm::vec3>(std::size_t(w) * std::size_t(h)), {}};
     const char* p = b.data() + i;
     for (long long y = h - 1; y >= 0; --y)  // the file's first row is the image's bottom row
         for (long long x = 0; x < w; ++x) {

@@ -2,6 +2,7 @@
 #if __has_include("render_controller.h")  // built only with the viewer (WHITTED_BUILD_VIEWER=ON)
 #include "render_controller.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -16,7 +17,9 @@
 
 #include <gtest/gtest.h>
 
+#include "film/film.h"
 #include "film/image_io.h"
+#include "integrator/integrator.h"
 #include "render/renderer.h"
 #include "support/run_process.h"
 #include "support/scene_builder.h"
@@ -241,6 +244,37 @@ TEST(RenderController, SamplePassesAddUpToTheImageOfOneRender) {
     s.threads = 1;
     render(*scene, s, direct);
     EXPECT_EQ(c.image().rgb, direct.rgb);
+}
+
+// Save image as .exr or .pfm keeps the film's values unclamped, as whitted -o does: a path-traced
+// light brighter than 1 gives values above 1, the same floats as a direct render's film.
+TEST(RenderController, KeepsTheFilmsLinearValuesForExrAndPfm) {
+    test::SceneBuilder b;
+    Material m;
+    m.diffuse = glm::vec3(0.9f, 0.5f, 0.2f);
+    b.add(ShapeKind::Sphere, test::translate_scale({0, 0, -3}, glm::vec3(1.5f)), m);
+    auto scene = std::make_shared<const Scene>(b.light(test::point_light({2, 3, 0}, glm::vec3(6.0f))).build());
+    RenderJob s;
+    s.width = 40;
+    s.height = 30;
+    s.integrator = {RenderMode::Path, 4};
+    s.sampling.spp = 4;
+    s.threads = 2;
+    RenderController c;
+    c.start(scene, s);
+    ASSERT_TRUE(c.wait(60s));
+    ASSERT_EQ(c.status().state, RenderState::Finished);
+    const LinearImage linear = c.linear_image();
+    ASSERT_EQ(linear.width, 40);
+    ASSERT_EQ(linear.height, 30);
+    float brightest = 0.0f;
+    for (const glm::vec3& v : linear.rgb) brightest = std::max({brightest, v.x, v.y, v.z});
+    EXPECT_GT(brightest, 1.5f) << "clamped like the 8-bit image";
+    s.threads = 1;
+    Film film(40, 30);
+    const auto integrator = make_integrator(*scene, s.camera_for(*scene), s.integrator);
+    render(*integrator, s, film);
+    EXPECT_EQ(linear.rgb, film.to_linear().rgb);
 }
 
 TEST(RenderController, StopKeepsThePassesDone) {
