@@ -45,7 +45,8 @@ TEST_F(ViewerE2E, SaveImageAsStartsInTheScenesFolder) {
 
     // The suggested name is selected without its folder: typing replaces it.
     save_as({"type x.gif", "key Return"});
-    const std::string error = "error: cannot write '" + dir_ + "/scenes/x.gif': use .png, .bmp, .ppm, .jpg or .jpeg";
+    const std::string error =
+        "error: cannot write '" + dir_ + "/scenes/x.gif': use .png, .bmp, .ppm, .jpg, .jpeg, .exr or .pfm";
     ASSERT_TRUE(wait_for_ready(viewer, ready, r, [](const Ready& n) { return !n.panel.empty(); }, 20s))
         << viewer.output();
     EXPECT_EQ(r.panel, std::vector<std::string>{error});
