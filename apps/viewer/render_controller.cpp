@@ -61,6 +61,7 @@ struct RenderController::Job {
     std::uint64_t id = 0;
     std::string path;  // "" when the scene was given
     LoadOptions load;
+    std::string key;  // the file's stamp and the load options when the job started
     bool force_reload = false;
     bool coarse_first = false;
     std::shared_ptr<const Scene> scene;
@@ -91,21 +92,28 @@ void RenderController::cancel_current_locked() {
     }
 }
 
+// The settings as the controller renders them: sizes, depth and samples within their ranges, no
+// callbacks (the controller's own, per job).
+static RenderJob sanitized(const RenderJob& settings) {
+    RenderJob s = settings;
+    s.width = std::max(1, settings.width);
+    s.height = std::max(1, settings.height);
+    s.integrator.max_depth = std::max(0, settings.integrator.max_depth);
+    s.sampling.aa = std::clamp(settings.sampling.aa, 1, Sampler::kMaxAa);
+    s.sampling.spp = std::clamp(settings.sampling.spp, 1, Sampler::kMaxSpp);
+    s.sampling.aa_threshold =
+        settings.sampling.aa_threshold > 0.0f ? std::min(settings.sampling.aa_threshold, 1.0f) : 0.0f;  // NaN: 0
+    s.cancel = nullptr;
+    s.on_tile = nullptr;
+    s.threads = std::max(0, settings.threads);
+    s.tile_size = std::max(1, settings.tile_size);
+    return s;
+}
+
 void RenderController::begin_locked(std::shared_ptr<Job> job, const std::string& path, const RenderJob& settings) {
     cancel_current_locked();
     job->id = ++next_job_;
-    job->settings = settings;
-    job->settings.width = std::max(1, settings.width);
-    job->settings.height = std::max(1, settings.height);
-    job->settings.integrator.max_depth = std::max(0, settings.integrator.max_depth);
-    job->settings.sampling.aa = std::clamp(settings.sampling.aa, 1, Sampler::kMaxAa);
-    job->settings.sampling.spp = std::clamp(settings.sampling.spp, 1, Sampler::kMaxSpp);
-    job->settings.sampling.aa_threshold =
-        settings.sampling.aa_threshold > 0.0f ? std::min(settings.sampling.aa_threshold, 1.0f) : 0.0f;  // NaN: 0
-    job->settings.cancel = nullptr;  // the controller's own, per job
-    job->settings.on_tile = nullptr;
-    job->settings.threads = std::max(0, settings.threads);
-    job->settings.tile_size = std::max(1, settings.tile_size);
+    job->settings = sanitized(settings);
     current_ = job;
     status_ = RenderStatus{};
     status_.state = RenderState::Loading;
@@ -116,17 +124,25 @@ void RenderController::begin_locked(std::shared_ptr<Job> job, const std::string&
     changed_.notify_all();
 }
 
-void RenderController::start(const std::string& scene_path, const LoadOptions& load, const RenderJob& settings,
+bool RenderController::start(const std::string& scene_path, const LoadOptions& load, const RenderJob& settings,
                              bool force_reload, bool coarse_first) {
     reap();
     auto job = std::make_shared<Job>();
     job->path = scene_path;
     job->load = load;
+    job->key = file_stamp(scene_path) + "#" + options_key(load);
     job->force_reload = force_reload;
     job->coarse_first = coarse_first;
     std::lock_guard lock(mutex_);
+    // Asked again for what is being made or was made: the same file, unchanged, the same pixels.
+    if (!force_reload && !coarse_first && current_ && !current_->path.empty() && current_->path == scene_path &&
+        current_->key == job->key && !job->key.starts_with("#") &&
+        (is_busy(status_.state) || status_.state == RenderState::Finished) &&
+        same_pixels(current_->settings, sanitized(settings)))
+        return false;
     begin_locked(job, scene_path, settings);
     launch(job);
+    return true;
 }
 
 void RenderController::start(std::shared_ptr<const Scene> scene, const RenderJob& settings) {
@@ -163,7 +179,7 @@ void RenderController::run(std::shared_ptr<Job> job) {
     // 1. The scene: given, cached, or loaded now.
     std::shared_ptr<const Scene> scene = job->scene;
     if (!scene) {
-        const std::string key = file_stamp(job->path) + "#" + options_key(job->load);
+        const std::string& key = job->key;
         LoadResult loaded;
         bool reused = false;
         {
@@ -198,18 +214,21 @@ void RenderController::run(std::shared_ptr<Job> job) {
         scene = loaded.scene;
     }
 
-    // 2. The render, pass after pass into one film; finished tiles are copied to the shared image.
-    const RenderJob& s = job->settings;
-    const std::vector<int> passes = sample_passes(s.sampling);
+    // 2. The render: a session's coarse frames (a moving camera) and passes; each finished tile is
+    // copied to the shared image as it comes, over the picture already there.
+    RenderJob settings = job->settings;
+    settings.cancel = &job->cancel;
+    Session session(scene, settings);
+    const RenderJob& s = session.job();
     {
         std::lock_guard lock(mutex_);
         if (!is_current()) return finish();
         status_.state = RenderState::Rendering;
-        status_.tiles_total = s.tile_count() * int(passes.size());
-        status_.samples_total = passes.back();
-        status_.passes_total = int(passes.size());
-        // A moving camera keeps the last frame until the first coarse one replaces it.
-        if (!job->coarse_first || image_.width != s.width || image_.height != s.height) {
+        status_.tiles_total = s.tile_count() * int(session.pass_ends().size());
+        status_.samples_total = session.pass_ends().back();
+        status_.passes_total = int(session.pass_ends().size());
+        // The last picture stays on screen until the new one's tiles (or coarse frames) replace it.
+        if (image_.width != s.width || image_.height != s.height) {
             image_ = Image(s.width, s.height);
             ++image_version_;
         }
@@ -220,25 +239,10 @@ void RenderController::run(std::shared_ptr<Job> job) {
         shown_.settings.on_tile = nullptr;
         changed_.notify_all();
     }
-    const auto integrator = make_integrator(*scene, s.camera_for(*scene), s.integrator);
-    if (job->coarse_first) {
-        // Coarse frames: the same camera at 1/n of the size (the aspect ratio kept as well as whole
-        // pixels allow), one sample per pixel, each shown enlarged as soon as it is done.
+    if (job->coarse_first)
         for (int div : kPreviewDivisors) {
-            RenderJob small = s;
-            small.width = std::max(1, (s.width + div - 1) / div);
-            small.height = std::max(1, (s.height + div - 1) / div);
-            small.region.reset();
-            small.sampling = SamplingSettings{};
-            small.sample_begin = 0;
-            small.sample_end = -1;
-            small.cancel = &job->cancel;
-            small.on_tile = nullptr;
-            Film small_film(small.width, small.height);
-            if (render(*integrator, small, small_film).cancelled) break;
-            Image small_image(small.width, small.height);
-            small_film.write_to(small_image, PixelRegion{0, 0, small.width, small.height});
-            Image big = enlarge_nearest(small_image, s.width, s.height);
+            Image big;
+            if (!session.render_preview(div, big)) break;
             std::lock_guard lock(mutex_);
             if (!is_current()) return finish();
             image_ = std::move(big);
@@ -247,11 +251,7 @@ void RenderController::run(std::shared_ptr<Job> job) {
             status_.preview_divisor = div;
             changed_.notify_all();
         }
-    }
-    Film film(s.width, s.height);
-    RenderJob pass = s;
-    pass.cancel = &job->cancel;
-    pass.on_tile = [&](const Tile& t) {
+    const auto on_tile = [&](const Tile& t, const Film& film) {
         // Runs on the render thread that finished the tile, so reading its film pixels is race-free.
         {
             std::lock_guard lock(mutex_);
@@ -265,14 +265,12 @@ void RenderController::run(std::shared_ptr<Job> job) {
         if (after_tile_) after_tile_(job->id);
     };
     bool cancelled = false;
-    for (std::size_t i = 0; i < passes.size() && !cancelled; ++i) {
-        pass.sample_begin = i == 0 ? 0 : passes[i - 1];
-        pass.sample_end = passes[i];
-        cancelled = render(*integrator, pass, film).cancelled;
+    while (!session.done() && !cancelled) {
+        cancelled = session.render_pass(on_tile).render.cancelled;
         std::lock_guard lock(mutex_);
         if (!cancelled && is_current()) {
-            status_.samples_done = passes[i];
-            status_.passes_done = int(i) + 1;
+            status_.samples_done = session.samples_done();
+            status_.passes_done = session.passes_done();
         }
     }
 

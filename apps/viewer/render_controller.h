@@ -74,8 +74,11 @@ public:
     // load, that scene is rendered again without loading (pass force_reload to load anyway).
     // coarse_first (a camera that moves): 1/8, 1/4 and 1/2 resolution frames come first (one
     // sample per pixel, each shown enlarged), then the full image over the last of them, then its
-    // sample passes; the previous image stays on screen until the first coarse frame replaces it.
-    void start(const std::string& scene_path, const LoadOptions& load, const RenderJob& settings,
+    // sample passes; the previous image stays on screen until the new one's pixels replace it.
+    // Returns false, doing nothing, when asked again for what the current job makes or made: the
+    // same file, unchanged since it began, with the same load options and the same pixels
+    // (same_pixels), the job still running or finished (not when stopped or failed).
+    bool start(const std::string& scene_path, const LoadOptions& load, const RenderJob& settings,
                bool force_reload = false, bool coarse_first = false);
     // Renders a scene that is already loaded (no file involved).
     void start(std::shared_ptr<const Scene> scene, const RenderJob& settings);

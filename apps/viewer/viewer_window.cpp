@@ -174,7 +174,10 @@ void ViewerWindow::render(bool force_reload) {
     extra_message_.clear();
     watch_->rearm();
     camera_.apply(s);  // the view the user moved to stays
-    controller_.start(scene_, load_options(), s, force_reload);
+    if (!controller_.start(scene_, load_options(), s, force_reload)) {
+        set_message("the image is up to date: nothing changed (File > Reload reads the scene again)");
+        return;
+    }
     report_->job_started(controller_.status().job);
 }
 

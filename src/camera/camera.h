@@ -33,6 +33,7 @@ struct Camera {
         return forward + sx * right + sy * up;  // its forward component is 1
     }
     bool is_pinhole() const { return !(lens_radius > 0.0f); }
+    bool operator==(const Camera&) const = default;
 };
 
 }  // namespace whitted

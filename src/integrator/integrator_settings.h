@@ -11,6 +11,7 @@ struct IntegratorSettings {
     int max_depth = 5;  // camera ray = depth 0; no ray deeper than this is traced (path: bounces)
     // Which of the course's projects draws a CSCI 1230 scene in Whitted mode (§9.5).
     cs1230::Stage cs1230_stage = cs1230::Stage::Illuminate;
+    bool operator==(const IntegratorSettings&) const = default;
 };
 
 }  // namespace whitted

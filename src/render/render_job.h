@@ -35,6 +35,7 @@ struct SamplingSettings {
     int min_spp = 16;
     int samples_per_pixel() const { return Sampler(aa, spp).samples_per_pixel(); }
     bool adaptive() const { return aa > 1 && spp == 1 && aa_threshold > 0.0f; }
+    bool operator==(const SamplingSettings&) const = default;
 };
 
 struct RenderJob {
@@ -61,5 +62,9 @@ struct RenderJob {
     Camera camera_for(const Scene& scene) const;  // the job's camera, or the scene file's
     int tile_count() const;
 };
+
+// Whether two jobs make the same pixels: the same image, part, camera, method and samples (the
+// threads, tile size and callbacks change only how they are made).
+bool same_pixels(const RenderJob& a, const RenderJob& b);
 
 }  // namespace whitted

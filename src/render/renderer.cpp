@@ -23,6 +23,12 @@ Camera RenderJob::camera_for(const Scene& scene) const { return camera.value_or(
 
 int RenderJob::tile_count() const { return int(cut_into_tiles(render_region(), tile_size).size()); }
 
+bool same_pixels(const RenderJob& a, const RenderJob& b) {
+    return a.width == b.width && a.height == b.height && a.render_region() == b.render_region() &&
+           a.camera == b.camera && a.integrator == b.integrator && a.sampling == b.sampling &&
+           a.sample_begin == b.sample_begin && a.sample_end == b.sample_end && a.active == b.active;
+}
+
 RenderStats render(const Integrator& integrator, const RenderJob& job, Film& film) {
     return render_tiles(integrator, job, cut_into_tiles(job.render_region(), job.tile_size), film);
 }

@@ -56,6 +56,10 @@ const std::vector<Setting>& render_settings_table() {
         {"min-spp", "Min SPP", "Adaptive sampling: the samples every pixel takes before it may stop", &S::min_spp, 1,
          Sampler::kMaxSpp, {}, true, kMpi | kViewer, "whitted-mpi has no adaptive sampling (see --noise-threshold)",
          kViewerRendersUntilStopped},
+        {"seed", "Seed",
+         "Another seed gives other, equally good sample values: an independent render of the same scene (a "
+         "reference to measure noise against, or renders to average); 0 = the default",
+         &S::seed, 0, 2147483647, {}, true},
         {"time", "Scene time",
          "Scene time t: 'velocity x y z' moves by t·(x, y, z), 'angularrate ax ay az r' turns by r·t degrees (0 = "
          "the still image)",
@@ -181,6 +185,7 @@ RenderJob make_render_job(const RenderSettings& s) {
     job.sampling.aa_threshold = s.aa_threshold;
     job.sampling.noise_threshold = s.noise_threshold;
     job.sampling.min_spp = s.min_spp;
+    job.sampling.seed = std::uint32_t(s.seed);
     job.threads = s.threads;
     return job;
 }

@@ -27,6 +27,7 @@ struct RenderSettings {
     float aa_threshold = 0.0f;
     float noise_threshold = 0.0f;
     int min_spp = 16;
+    int seed = 0;
     float time = 0.0f;
     int threads = 0;
     bool lenient = false;

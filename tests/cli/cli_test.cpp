@@ -262,6 +262,25 @@ TEST(Cli, ThreadCountChangesNoByte) {
     }
 }
 
+// --seed: other sample values (an independent render, to measure noise against), the same for the
+// same seed.
+TEST(Cli, ASeedGivesOtherSamplesAndTheSameSeedTheSameBytes) {
+    std::string dir = test::make_temp_dir();
+    std::string scene = test::source_dir() + "/scenes/features/cornell_box.sc";
+    auto bytes_of = [&](const char* seed) {
+        std::string out = dir + "/s" + seed + ".pfm";
+        auto r = run_process({test::cli_path(), scene, "-o", out, "--width", "32", "--height", "24", "--mode", "path",
+                              "--spp", "4", "--seed", seed, "-q"});
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+        std::ifstream in(out, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    const std::string zero = bytes_of("0"), one = bytes_of("1");
+    ASSERT_FALSE(zero.empty());
+    EXPECT_NE(zero, one) << "--seed 1 gave the samples of seed 0";
+    EXPECT_EQ(bytes_of("1"), one);
+}
+
 TEST(Cli, ProgressLineOnlyOnATerminal) {
     std::string dir = test::make_temp_dir();
     std::string scene = write_file(dir, "s.sc", kSimpleScene);

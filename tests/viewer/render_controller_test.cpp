@@ -434,8 +434,10 @@ TEST(RenderController, LoadsASceneFileAndReportsItsCounts) {
     Image img = c.image();
     EXPECT_GT(img.at(20, 15).x, 100);  // the red ball
 
-    // Same file, same options: the loaded scene is used again; a changed file is loaded again.
-    c.start(path, {}, s);
+    // Same file, same options, other render settings: the loaded scene is used again; a changed
+    // file is loaded again.
+    s.sampling.aa = 2;
+    ASSERT_TRUE(c.start(path, {}, s));
     ASSERT_TRUE(c.wait(30s));
     EXPECT_TRUE(c.status().scene_reused);
     c.start(path, {}, s, /*force_reload=*/true);
@@ -602,6 +604,79 @@ TEST(RenderController, CoarseFramesComeFirstThenTheSameFullImage) {
     EXPECT_EQ(st.preview_divisor, 1);
     EXPECT_EQ(c.image().rgb, plain.image().rgb);
     (void)saw_eighth;  // a fast machine may pass it between two looks; the count above still holds
+}
+
+TEST(RenderController, AskingAgainForTheSameImageDoesNothing) {
+    std::string dir = test::make_temp_dir();
+    std::string path = test::write_file(dir, "ball.sc", kBallScene);
+    RenderController c;
+    RenderJob s;
+    s.width = 40;
+    s.height = 30;
+    ASSERT_TRUE(c.start(path, {}, s));
+    ASSERT_TRUE(c.wait(30s));
+    const std::uint64_t job = c.status().job;
+    EXPECT_FALSE(c.start(path, {}, s)) << "nothing changed: no new job";
+    EXPECT_EQ(c.status().job, job);
+    EXPECT_EQ(c.status().state, RenderState::Finished);
+    s.threads = 1;  // how it is made, not what: the same pixels
+    s.tile_size = 7;
+    EXPECT_FALSE(c.start(path, {}, s));
+    // Anything that changes the pixels renders again.
+    RenderJob deeper = s;
+    deeper.integrator.max_depth = 2;
+    EXPECT_TRUE(c.start(path, {}, deeper));
+    ASSERT_TRUE(c.wait(30s));
+    RenderJob moved = deeper;
+    moved.camera = Camera{};
+    EXPECT_TRUE(c.start(path, {}, moved));
+    ASSERT_TRUE(c.wait(30s));
+    LoadOptions later;
+    later.time = 1;
+    EXPECT_TRUE(c.start(path, later, moved));
+    ASSERT_TRUE(c.wait(30s));
+    EXPECT_TRUE(c.start(path, later, moved, /*force_reload=*/true)) << "Reload always reads the file";
+    ASSERT_TRUE(c.wait(30s));
+    // A stopped job is rendered again when asked.
+    c.stop();
+    EXPECT_EQ(c.status().state, RenderState::Finished) << "stop after the end changes nothing";
+    const auto before = std::filesystem::last_write_time(path);
+    std::filesystem::last_write_time(path, before + 2s);  // the file touched: rendered again
+    EXPECT_TRUE(c.start(path, later, moved));
+    c.stop();
+    EXPECT_TRUE(c.start(path, later, moved));
+    ASSERT_TRUE(c.wait(30s));
+}
+
+TEST(RenderController, ARenderAgainKeepsTheOldPictureUntilItsTilesAreReplaced) {
+    std::string dir = test::make_temp_dir();
+    std::string path = test::write_file(dir, "ball.sc", kBallScene);
+    RenderController c;
+    TileGate gate(2, 1);  // holds the second job after its first tile
+    GateOpener opener{gate};
+    c.set_after_tile_hook_for_tests([&](std::uint64_t job) { gate.at_tile(job); });
+    RenderJob s;
+    s.width = 64;
+    s.height = 64;
+    s.tile_size = 8;
+    s.threads = 1;
+    ASSERT_TRUE(c.start(path, {}, s));
+    ASSERT_TRUE(c.wait(30s));
+    const Image first = c.image();
+    ASSERT_GT(lit_bytes(first), 50u);  // the red ball, about 10 pixels across
+    RenderJob spp4 = s;
+    spp4.sampling.spp = 4;
+    ASSERT_TRUE(c.start(path, {}, spp4));
+    ASSERT_TRUE(gate.wait_held(60s));
+    // One tile of the new job is in (the top left, 8 x 8, black background); the ball in the
+    // middle is still the last picture's, not a blank.
+    const Image during = c.image();
+    EXPECT_EQ(c.status().tiles_done, 1);
+    EXPECT_EQ(during.at(32, 32), first.at(32, 32));
+    EXPECT_GT(during.at(32, 32).x, 100);
+    EXPECT_EQ(during.rgb, first.rgb) << "its first tile is background in both";
+    gate.open();
+    ASSERT_TRUE(c.wait(30s));
 }
 
 TEST(RenderController, EnlargingRepeatsEachPixelNearestNeighbour) {
