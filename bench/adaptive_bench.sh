@@ -1,18 +1,24 @@
 #!/usr/bin/env bash
-# Adaptive sampling (--noise-threshold) against uniform sampling at equal error: for each scene, a
-# reference of REF samples per pixel, uniform renders at 16, 64 and 256 samples, then adaptive
-# renders at the noise thresholds in THRESHOLDS; each run's error against the reference (relative
-# MSE, as rendering papers report it: mean of (x - ref)^2 / (ref^2 + 0.01) over pixels and channels)
-# and its cost: CPU seconds (user + system, less disturbed by other load than wall time) and rays
-# traced (from --stats: a count of the work that no load changes).
+# Adaptive sampling (--noise-threshold) against uniform sampling at equal error. For each scene:
+# two independent references of REF samples per pixel (--seed 1 and --seed 2: a reference that
+# shares the renders' sample values would hide their noise), uniform renders at 16, 64 and 256
+# samples, then adaptive renders at the noise thresholds in THRESHOLDS (at most MAX samples, from
+# 16). Each run's error against the first reference is the relative MSE rendering papers report
+# (mean of (x - ref)^2 / (ref^2 + 0.01) over pixels and channels), less the reference's own share
+# (half the error between the two references, the references being independent). Cost: rays traced
+# (from --stats: the work, whatever else the machine does) and CPU seconds (user + system).
+# Uniform sampling's error falls as 1/samples, so the uniform rays for an adaptive run's error are
+# the fitted c / error × rays per sample; their ratio to the adaptive run's rays is its speed-up.
 # Usage: bench/adaptive_bench.sh [BUILD_DIR]   (Release; writes a table to stdout)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cli="${1:-$root/build-release}/apps/cli/whitted"
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
-REF=${REF:-4096}
-THRESHOLDS=${THRESHOLDS:-"0.1 0.05 0.025 0.0125 0.00625"}
+REF=${REF:-2048}
+MAX=${MAX:-1024}
+THRESHOLDS=${THRESHOLDS:-"0.1 0.05 0.025 0.0125"}
+SCENES=${SCENES:-"showcase features/cornell_box"}
 SIZE=(--width "${WIDTH:-160}" --height "${HEIGHT:-120}" --mode path --threads 2 -q --stats)
 
 # run NAME ARGS...: renders to $out/NAME.pfm; prints "cpu_seconds rays"
@@ -41,17 +47,38 @@ print('%.6g' % (sum((x - y) ** 2 / (y * y + 0.01) for x, y in zip(a, r)) / len(a
 PY
 }
 
-for scene in showcase features/cornell_box; do
+for scene in $SCENES; do
     s="$root/scenes/$scene.sc"
-    run ref "$s" --spp "$REF" >/dev/null
-    echo "== $scene (${SIZE[*]:0:4}), reference $REF spp"
-    echo "method | spp / threshold | relMSE | CPU s | rays"
+    run ref1 "$s" --spp "$REF" --seed 1 >/dev/null
+    run ref2 "$s" --spp "$REF" --seed 2 >/dev/null
+    ref_err=$(python3 -c "print($(relmse "$out/ref1.pfm" "$out/ref2.pfm") / 2)")
+    rows="$out/rows.txt"
+    : >"$rows"
     for spp in 16 64 256; do
         read -r cpu rays < <(run "u$spp" "$s" --spp "$spp")
-        echo "uniform | $spp | $(relmse "$out/u$spp.pfm" "$out/ref.pfm") | $cpu | $rays"
+        echo "uniform $spp $(relmse "$out/u$spp.pfm" "$out/ref1.pfm") $cpu $rays" >>"$rows"
     done
     for t in $THRESHOLDS; do
-        read -r cpu rays < <(run "a$t" "$s" --spp 1024 --noise-threshold "$t")
-        echo "adaptive | $t (max 1024, min 16) | $(relmse "$out/a$t.pfm" "$out/ref.pfm") | $cpu | $rays"
+        read -r cpu rays < <(run "a$t" "$s" --spp "$MAX" --noise-threshold "$t")
+        echo "adaptive $t $(relmse "$out/a$t.pfm" "$out/ref1.pfm") $cpu $rays" >>"$rows"
     done
+    echo "== $scene (${SIZE[*]:0:6}), references: 2 x $REF spp (seeds 1, 2), their own relMSE $ref_err subtracted"
+    python3 - "$rows" "$ref_err" <<'PY'
+import sys
+ref_err = float(sys.argv[2])
+rows = [l.split() for l in open(sys.argv[1])]
+uni = [(int(r[1]), float(r[2]) - ref_err, float(r[4])) for r in rows if r[0] == 'uniform']
+# error = c / spp: c fitted in the log domain over the uniform runs; rays per sample from them too
+import math
+c = math.exp(sum(math.log(e * n) for n, e, _ in uni) / len(uni))
+rays_per_spp = sum(r / n for n, _, r in uni) / len(uni)
+print('method | spp / threshold | relMSE | CPU s | rays (M) | uniform rays at this error (M) | speed-up')
+print('--- | --- | --- | --- | --- | --- | ---')
+for r in rows:
+    err = float(r[2]) - ref_err
+    rays = float(r[4])
+    equal = c / err * rays_per_spp if err > 0 else float('inf')
+    print('%s | %s | %.3g | %s | %.1f | %.1f | %.2f' % (r[0], r[1], err, r[3], rays / 1e6, equal / 1e6, equal / rays))
+print('uniform fit: relMSE = %.4g / spp' % c)
+PY
 done

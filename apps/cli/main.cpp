@@ -151,14 +151,15 @@ int run(int argc, char** argv) {
         return limit_ran_out() ? kExitTimeout : kExitInterrupted;
     }
     const std::string written = complete ? o.output : partial_image_path(o.output);
-    // .exr and .pfm keep the linear values; the 8-bit formats get them clamped (§7).
+    // .exr and .pfm keep the linear values; the 8-bit formats get them through the view transform
+    // (linear: clamped, §7).
     std::string err;
     if (is_linear_output(written)) {
         LinearImage image = session.film().to_linear();
         image.text = image_text(session, o);
         err = write_linear_image(image, written);
     } else {
-        Image image = session.film().to_image();
+        Image image = session.film().to_image(view_transform(o.settings));
         image.text = image_text(session, o);
         err = write_image(image, written);
     }

@@ -183,7 +183,7 @@ struct Master {
             image.text = text;
             return write_linear_image(image, path);
         }
-        Image image = film.to_image();
+        Image image = film.to_image(view_transform(s.options->settings));
         image.text = text;
         return write_image(image, path);
     }

@@ -15,7 +15,7 @@ ImageView::ImageView(int x, int y, int w, int h) : Fl_Widget(x, y, w, h) {
     // Takes the keyboard (its keys are the view's: the menus' shortcuts); draw() draws no focus
     // box. (Without visible focus FLTK would never give it the focus: Fl::focus() ignores such a widget.)
     visible_focus(1);
-    set_exposure(0.0f);
+    for (int i = 0; i < 256; ++i) lut_[std::size_t(i)] = std::uint8_t(i);
 }
 
 double ImageView::scale() const {
@@ -46,13 +46,6 @@ void ImageView::zoom_by(int steps) {
     fit_ = false;
     zoom_ = after;
     clamp_pan();
-    redraw();
-}
-
-void ImageView::set_exposure(float stops) {
-    exposure_ = std::clamp(stops, -10.0f, 10.0f);
-    const double k = std::exp2(double(exposure_));
-    for (int i = 0; i < 256; ++i) lut_[std::size_t(i)] = std::uint8_t(std::clamp(std::lround(i * k), 0L, 255L));
     redraw();
 }
 
@@ -153,7 +146,7 @@ void ImageView::draw() {
     const bool have_image = image.width > 0 && image.height > 0;
     if (have_image) {
         // The visible part of the image, in window coordinates; each screen pixel shows the image
-        // pixel under its top-left corner (nearest neighbour), dimmed or exposed through the table.
+        // pixel under its top-left corner (nearest neighbour), dimmed through the table.
         const double s = scale();
         const int ix = image_x(), iy = image_y();
         const int x0 = std::max(x(), ix), y0 = std::max(y(), iy);

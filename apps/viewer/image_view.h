@@ -55,9 +55,6 @@ public:
     void zoom_by(int steps);  // each step doubles (or halves) the magnification
     double scale() const;     // screen pixels per image pixel now
     bool fitting() const { return fit_; }
-    // Exposure in stops for linear images (the path tracer's): each byte times 2^stops, clamped.
-    void set_exposure(float stops);
-    float exposure() const { return exposure_; }
 
     // The image's top-left corner in window coordinates (may lie outside the widget).
     int image_x() const;
@@ -79,7 +76,6 @@ private:
     bool fit_ = false;
     double zoom_ = 1.0;            // when not fitting
     double pan_x_ = 0, pan_y_ = 0;  // offset of the image's centre from the area's centre, screen px
-    float exposure_ = 0.0f;
     std::array<std::uint8_t, 256> lut_{};
     std::vector<std::uint8_t> buffer_;  // the pixels of the area as drawn
     // The press that started the current gesture.

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <sstream>
 
@@ -230,10 +231,10 @@ void RenderController::run(std::shared_ptr<Job> job) {
         // The last picture stays on screen until the new one's tiles (or coarse frames) replace it.
         if (image_.width != s.width || image_.height != s.height) {
             image_ = Image(s.width, s.height);
+            linear_ = LinearImage{s.width, s.height,
+                                  std::vector<glm::vec3>(std::size_t(s.width) * std::size_t(s.height)), {}};
             ++image_version_;
         }
-        linear_ = LinearImage{s.width, s.height,
-                              std::vector<glm::vec3>(std::size_t(s.width) * std::size_t(s.height)), {}};
         shown_ = Shown{scene, s, job->path};
         shown_.settings.cancel = nullptr;
         shown_.settings.on_tile = nullptr;
@@ -241,11 +242,12 @@ void RenderController::run(std::shared_ptr<Job> job) {
     }
     if (job->coarse_first)
         for (int div : kPreviewDivisors) {
-            Image big;
+            LinearImage big;
             if (!session.render_preview(div, big)) break;
             std::lock_guard lock(mutex_);
             if (!is_current()) return finish();
-            image_ = std::move(big);
+            linear_ = std::move(big);
+            encode_region(linear_, image_, PixelRegion{0, 0, s.width, s.height}, view_, exposure_scale_);
             ++image_version_;
             ++status_.frames;
             status_.preview_divisor = div;
@@ -256,8 +258,8 @@ void RenderController::run(std::shared_ptr<Job> job) {
         {
             std::lock_guard lock(mutex_);
             if (!is_current()) return;
-            film.write_to(image_, t);
             film.write_to(linear_, t);
+            encode_region(linear_, image_, t, view_, exposure_scale_);
             ++status_.tiles_done;
             if (status_.tiles_done == s.tile_count()) status_.preview_divisor = 1;  // the first full pass is in
             ++image_version_;
@@ -282,6 +284,24 @@ void RenderController::run(std::shared_ptr<Job> job) {
     finish();
 }
 
+
+std::optional<glm::vec3> RenderController::linear_at(int x, int y) const {
+    std::lock_guard lock(mutex_);
+    if (x < 0 || y < 0 || x >= linear_.width || y >= linear_.height) return std::nullopt;
+    return linear_.rgb[std::size_t(y) * std::size_t(linear_.width) + std::size_t(x)];
+}
+
+void RenderController::set_display(ViewTransform view, float exposure_stops) {
+    std::lock_guard lock(mutex_);
+    const float scale = std::exp2(std::clamp(exposure_stops, -20.0f, 20.0f));
+    if (view == view_ && scale == exposure_scale_) return;
+    view_ = view;
+    exposure_scale_ = scale;
+    if (linear_.width == image_.width && linear_.height == image_.height)
+        encode_region(linear_, image_, PixelRegion{0, 0, image_.width, image_.height}, view_, exposure_scale_);
+    ++image_version_;
+    changed_.notify_all();
+}
 
 RenderStatus RenderController::status() const {
     std::lock_guard lock(mutex_);

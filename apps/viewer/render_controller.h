@@ -9,11 +9,13 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "film/image.h"
+#include "film/view_transform.h"
 #include "integrator/render_mode.h"
 #include "render/load_scene.h"
 #include "render/renderer.h"
@@ -92,9 +94,15 @@ public:
     // Copies the image if it changed since `version` (0 = never seen); returns whether it did.
     bool copy_image_if_changed(Image& out, std::uint64_t& version) const;
     Image image() const;
-    // The current job's mean colours, unclamped (what .exr and .pfm keep): the tiles of its passes
-    // rendered so far at full size (coarse frames are not in it), black elsewhere.
+    // The mean colours of the picture shown, unclamped (what .exr and .pfm keep): the current job's
+    // tiles and coarse frames over the last job's picture.
     LinearImage linear_image() const;
+    // One pixel of it (none off the picture).
+    std::optional<glm::vec3> linear_at(int x, int y) const;
+
+    // How the picture's linear values are shown: the view transform, after an exposure of 2^stops.
+    // The picture is encoded again at once (no render); image() and Save image give what is shown.
+    void set_display(ViewTransform view, float exposure_stops);
 
     // The scene and settings of the image being shown (the last job that began rendering): what
     // the pixel inspector looks at. Null scene before any job rendered.
@@ -133,7 +141,9 @@ private:
     RenderStatus status_;
     std::chrono::steady_clock::time_point started_{};
     Image image_;
-    LinearImage linear_;  // the same pixels unclamped (full-size passes only)
+    LinearImage linear_;  // the picture's linear values; image_ is their encoding
+    ViewTransform view_ = ViewTransform::Linear;
+    float exposure_scale_ = 1.0f;
     Shown shown_;  // what image_ is a render of
     std::uint64_t image_version_ = 0;
     std::uint64_t next_job_ = 0;

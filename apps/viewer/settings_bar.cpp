@@ -53,6 +53,7 @@ SettingsBar* SettingsBar::active_ = nullptr;
 // that typing a number renders once).
 SettingsBar::SettingsBar(const RenderJob& settings, bool fit, std::set<std::string> given)
     : base_(settings), given_(std::move(given)) {
+    view_ = settings.integrator.mode == RenderMode::Path ? ViewTransform::Srgb : ViewTransform::Linear;
     const int h = 24;
     auto tool = [this](Fl_Widget* w, const char* id, int gap) {
         const Fl_Align a = w->align();
@@ -189,7 +190,31 @@ void SettingsBar::add_menu_items(Fl_Menu_Bar& m) {
     m.add("&Render/T&hreads...", 0, [](Fl_Widget*, void* v) { ask_spinner(bar(v)->threads_, "Worker threads"); }, this,
           FL_MENU_DIVIDER);
     // The load options of the command line.
-    m.add("&Render/AA thres&hold...", 0, [](Fl_Widget*, void* v) { bar(v)->ask_aa_threshold(); }, this);
+    m.add("&Render/AA thres&hold...", 0, [](Fl_Widget*, void* v) { bar(v)->ask_aa_threshold(); }, this,
+          FL_MENU_DIVIDER);
+    for (const ViewTransform view : {ViewTransform::Linear, ViewTransform::Srgb, ViewTransform::Filmic})
+        m.add((std::string("&Render/&View transform/") + view_transform_name(view)).c_str(), 0,
+              [](Fl_Widget* w, void* v) {
+                  const Fl_Menu_Item* item = static_cast<Fl_Menu_Bar*>(w)->mvalue();
+                  if (!item || !item->label()) return;
+                  if (const auto chosen = parse_view_transform(item->label())) bar(v)->set_view(*chosen);
+              },
+              this, FL_MENU_RADIO);
+    menu_ = &m;
+    show_view();
+}
+
+void SettingsBar::set_view(ViewTransform view) {
+    given_.insert("view");
+    view_ = view;
+    show_view();
+    if (on_view) on_view();
+}
+
+void SettingsBar::show_view() {
+    if (!menu_) return;
+    const std::string path = std::string("&Render/&View transform/") + view_transform_name(view_);
+    if (Fl_Menu_Item* item = const_cast<Fl_Menu_Item*>(menu_->find_item(path.c_str()))) item->setonly();
 }
 
 void SettingsBar::apply_mode_defaults() {
@@ -199,6 +224,11 @@ void SettingsBar::apply_mode_defaults() {
     whitted::apply_mode_defaults(s);  // the table's: path gets 64 samples and 64 bounces
     if (!s.is_given("spp")) spp_->value(s.spp);
     if (!s.is_given("max-depth")) depth_->value(s.max_depth);
+    if (!s.is_given("view")) {
+        view_ = view_transform(s);
+        show_view();
+        if (on_view) on_view();
+    }
 }
 
 RenderJob SettingsBar::job(int area_w, int area_h) {

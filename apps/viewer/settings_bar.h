@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "film/view_transform.h"
 #include "render/render_job.h"
 
 class Fl_Button;
@@ -41,6 +42,10 @@ public:
     RenderJob shown() const;
     bool fit() const;
     int threads() const;  // the BVH build uses the render's threads
+    // How the picture is shown: the Render menu's View transform; a mode chosen gives the mode's
+    // (sRGB for path, linear for the others) unless the user chose one.
+    ViewTransform view() const { return view_; }
+    void set_view(ViewTransform view);  // the user's choice (the command line's or the menu's)
 
     // The Stop button is active while a job loads or renders.
     void set_busy(bool busy);
@@ -59,6 +64,7 @@ public:
     std::function<void()> on_render;  // the Render button, a new AA threshold: render now
     std::function<void()> on_stop;    // the Stop button
     std::function<void()> on_change;  // a tool changed: once the typing or clicking has paused
+    std::function<void()> on_view;    // the view transform changed: show the picture through it
 
 private:
     static void changed_cb(Fl_Widget*, void* self);
@@ -69,7 +75,10 @@ private:
     bool editing() const;  // the keyboard focus is in one of the spinners
     static int dispatch(int event, Fl_Window* window);
 
+    void show_view();  // the menu's radio items, the view's notice
     RenderJob base_;  // what the tools do not show comes from here
+    ViewTransform view_ = ViewTransform::Linear;
+    Fl_Menu_Bar* menu_ = nullptr;
     std::set<std::string> given_;  // settings the user chose (command line or these tools)
     Fl_Button *render_ = nullptr, *stop_ = nullptr;
     Fl_Spinner *width_ = nullptr, *height_ = nullptr, *depth_ = nullptr, *aa_ = nullptr, *spp_ = nullptr,

@@ -52,4 +52,15 @@ std::string render_hint(const RenderStatus& st) {
     return sampled_effects_hint(st.load_stats.effects, st.settings.sampling, st.settings.integrator.mode);
 }
 
+std::string pixel_readout(const Image& image, int x, int y, const std::optional<glm::vec3>& linear) {
+    if (x < 0 || y < 0 || x >= image.width || y >= image.height) return "";
+    const glm::u8vec3 p = image.at(x, y);
+    char buf[160];
+    int n = std::snprintf(buf, sizeof buf, "x %d  y %d   RGB %d %d %d", x, y, p.x, p.y, p.z);
+    if (linear)
+        std::snprintf(buf + n, sizeof buf - std::size_t(n), "   linear %.4g %.4g %.4g", double(linear->x),
+                      double(linear->y), double(linear->z));
+    return buf;
+}
+
 }  // namespace whitted::viewer

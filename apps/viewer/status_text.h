@@ -1,6 +1,7 @@
 #pragma once
 // The status bar's texts for a render's status: what was loaded, and how far the render is.
 // Display-free (the window puts them into its fields).
+#include <optional>
 #include <string>
 
 #include "render_controller.h"
@@ -16,5 +17,9 @@ std::string progress_text(const RenderStatus& st);
 // What a render of the scene cannot show at its settings (sampled_effects_hint), once it renders;
 // "" otherwise. For the status bar when there is no message.
 std::string render_hint(const RenderStatus& st);
+
+// The pixel under the pointer: "x 10  y 20   RGB 255 128 0", and its radiance when given (path
+// mode's values above 1 that the bytes clip): "   linear 4.000 0.513 0". "" off the image.
+std::string pixel_readout(const Image& image, int x, int y, const std::optional<glm::vec3>& linear = std::nullopt);
 
 }  // namespace whitted::viewer

@@ -80,9 +80,13 @@ void ViewerWindow::save_image_as() {
     const bool partial = is_busy(controller_.status().state);
     const std::string err = is_linear_output(path) ? write_linear_image(controller_.linear_image(), path)
                                                    : write_image(controller_.image(), path);
+    // An 8-bit file is what is shown (view transform and exposure); .exr and .pfm keep radiance.
+    const std::string kept = exposure_ == 0.0f           ? ""
+                             : is_linear_output(path) ? " (the radiance, without the exposure)"
+                                                      : " (as shown, with the exposure)";
     set_message(!err.empty() ? "error: " + err
-                : partial    ? "saved " + path + " while still rendering: the image is partial"
-                             : "saved " + path);
+                : partial    ? "saved " + path + kept + " while still rendering: the image is partial"
+                             : "saved " + path + kept);
 }
 
 // The camera on screen as a `camera [ … ]` block, on the clipboard (and the selection buffer).

@@ -96,9 +96,10 @@ void ViewerWindow::zoom_view(Zoom how) {
 }
 
 void ViewerWindow::change_exposure(int stops) {
-    view_->set_exposure(stops == 0 ? 0.0f : view_->exposure() + float(stops));
+    exposure_ = stops == 0 ? 0.0f : std::clamp(exposure_ + float(stops), -10.0f, 10.0f);
+    controller_.set_display(settings_->view(), exposure_);
     char buf[64];
-    std::snprintf(buf, sizeof buf, "exposure %+g stops", double(view_->exposure()));
+    std::snprintf(buf, sizeof buf, "exposure %+g stops", double(exposure_));
     set_message(buf);
     report_->changed();
 }

@@ -27,15 +27,6 @@ namespace fs = std::filesystem;
 
 std::atomic<bool> g_quit_requested{false};
 
-// The status bar's readout of image pixel (x, y); "" off the image.
-std::string pixel_readout(const Image& image, int x, int y) {
-    if (x < 0 || y < 0 || x >= image.width || y >= image.height) return "";
-    const glm::u8vec3 p = image.at(x, y);
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "x %d  y %d   RGB %d %d %d", x, y, p.x, p.y, p.z);
-    return buf;
-}
-
 }  // namespace
 
 void request_quit_from_signal() { g_quit_requested = true; }
@@ -57,11 +48,18 @@ ViewerWindow::ViewerWindow(const ViewerOptions& options)
     settings_ = std::make_unique<SettingsBar>(settings, fit, options_.settings_given ? options_.render.given : std::set<std::string>{});
     settings_->on_render = [this] { render(); };
     settings_->on_stop = [this] { stop(); };
+    settings_->on_view = [this] {
+        controller_.set_display(settings_->view(), exposure_);
+        set_message(std::string("view transform ") + view_transform_name(settings_->view()));
+        if (report_) report_->changed();
+    };
     settings_->on_change = [this] {
         settings_chosen_ = true;  // the user's choice: remembered
         if (!scene_.empty()) render();
     };
     build_menus();
+    if (options_.render.is_given("view")) settings_->set_view(view_transform(options_.render));
+    controller_.set_display(settings_->view(), exposure_);
     view_ = new ImageView(0, kMenuH + kToolH, W, 100);
     connect_view();
     messages_ = std::make_unique<MessagesPanel>([this](const std::string& line) { open_message_line(line); });
@@ -105,7 +103,11 @@ void ViewerWindow::connect_view() {
     view_->on_wheel = [this](int steps, bool fov) {
         if (camera_.wheel(steps, fov)) render_view();
     };
-    view_->on_hover = [this](int x, int y) { status_->set_pixel(pixel_readout(view_->image, x, y)); };
+    view_->on_hover = [this](int x, int y) {
+        // Path mode's radiance goes above 1 where the bytes clip: its linear values too.
+        const bool path = controller_.status().settings.integrator.mode == RenderMode::Path;
+        status_->set_pixel(pixel_readout(view_->image, x, y, path ? controller_.linear_at(x, y) : std::nullopt));
+    };
     view_->on_inspect = [this](int x, int y) { inspection_->inspect(x, y); };
 }
 
@@ -331,7 +333,8 @@ void ViewerWindow::describe(std::ostream& out) const {
         << "watch_ticks " << watch_->ticks() << "\n"
         << "zoom " << view_->scale() << (view_->fitting() ? " fit" : "") << "\n"
         << "dimmed " << (view_->dimmed ? 1 : 0) << "\n"
-        << "exposure " << view_->exposure() << "\n";
+        << "exposure " << exposure_ << "\n"
+        << "view " << view_transform_name(settings_->view()) << "\n";
     if (const std::optional<CameraDesc> cam = camera_.current())
         out << "camera " << (camera_.moved() ? "moved " : "file ") << camera_block(*cam) << "\n";
     for (const std::string& r : preferences_.recent()) out << "recent " << r << "\n";

@@ -118,6 +118,7 @@ private:
     int area_w_ = 0, area_h_ = 0;  // the image area's size at the last layout
     RenderStatus shown_;  // the status the window was last brought up to date with (poll)
     bool quitting_ = false;
+    float exposure_ = 0.0f;  // stops: the picture's linear values times 2^exposure_, then the view transform
     bool settings_chosen_ = false;  // the settings are the user's (recalled, or changed in the window): saved on quit
     std::string extra_message_;  // a message of the viewer's own (e.g. a failed save)
 };

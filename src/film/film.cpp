@@ -20,9 +20,10 @@ void Film::copy_from(const Film& from, const PixelRegion& r) {
         std::copy_n(&from.at(r.x0, y), r.width(), &at(r.x0, y));
 }
 
-Image Film::to_image() const {
+Image Film::to_image(ViewTransform view, float scale) const {
     Image image(width_, height_);
-    write_to(image, region_);
+    write_to(image, region_, view, scale);
+    image.srgb = view != ViewTransform::Linear;
     return image;
 }
 
@@ -34,9 +35,22 @@ LinearImage Film::to_linear() const {
     return image;
 }
 
-void Film::write_to(Image& image, const PixelRegion& r) const {
+void Film::write_to(Image& image, const PixelRegion& r, ViewTransform view, float scale) const {
     // Row by row through both arrays (a one-sample 1080p render converts two million pixels).
     const std::size_t n = std::size_t(r.x1 - r.x0);
+    if (view != ViewTransform::Linear || scale != 1.0f) {
+        for (int y = r.y0; y < r.y1; ++y) {
+            const FilmPixel* from = &at(r.x0, y);
+            std::uint8_t* p = &image.rgb[(std::size_t(y) * std::size_t(image.width) + std::size_t(r.x0)) * 3];
+            for (std::size_t i = 0; i < n; ++i, p += 3) {
+                const glm::vec3 c = from[i].value() * scale;
+                p[0] = view_byte(view, c.x);
+                p[1] = view_byte(view, c.y);
+                p[2] = view_byte(view, c.z);
+            }
+        }
+        return;
+    }
     for (int y = r.y0; y < r.y1; ++y) {
         const FilmPixel* from = &at(r.x0, y);
         std::uint8_t* p = &image.rgb[(std::size_t(y) * std::size_t(image.width) + std::size_t(r.x0)) * 3];

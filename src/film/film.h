@@ -10,6 +10,7 @@
 
 #include "film/image.h"
 #include "film/pixel_region.h"
+#include "film/view_transform.h"
 
 namespace whitted {
 
@@ -52,12 +53,14 @@ public:
     void copy_from(const Film& from, const PixelRegion& r);
     void copy_from(const Film& from) { copy_from(from, from.region()); }
 
-    // The 8-bit image of the whole film (pixels outside the region black): ⌊255·clamp(v) + 0.5⌋.
-    Image to_image() const;
+    // The 8-bit image of the whole film (pixels outside the region black): ⌊255·clamp(v) + 0.5⌋,
+    // or each mean colour times `scale` through another view transform.
+    Image to_image(ViewTransform view = ViewTransform::Linear, float scale = 1.0f) const;
     // The mean colours unclamped (pixels outside the region black).
     LinearImage to_linear() const;
     // Writes the 8-bit values of the pixels of `r` into `image` (of the film's size).
-    void write_to(Image& image, const PixelRegion& r) const;
+    void write_to(Image& image, const PixelRegion& r, ViewTransform view = ViewTransform::Linear,
+                  float scale = 1.0f) const;
     // Writes the mean colours of the pixels of `r`, unclamped, into `image` (of the film's size).
     void write_to(LinearImage& image, const PixelRegion& r) const;
 

@@ -17,6 +17,10 @@ struct Image {
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgb;  // width·height·3 bytes, row-major
     ImageText text;
+    // The bytes are sRGB-encoded (a view transform other than linear): a PNG says so (sRGB and
+    // gAMA chunks), so colour-managed programs show it as meant. Linear bytes carry no chunk: the
+    // lab's images, like the course's, are shown as their bytes are.
+    bool srgb = false;
 
     Image() = default;
     Image(int w, int h) : width(w), height(h), rgb(std::size_t(w) * h * 3, 0) {}

@@ -88,6 +88,14 @@ bool encode_png(const Image& image, const std::function<void(const void*, std::s
     put32(ihdr, std::uint32_t(h));
     ihdr += std::string("\x08\x02\x00\x00\x00", 5);  // 8 bits, RGB, deflate, adaptive filters, no interlace
     write_chunk(write, "IHDR", reinterpret_cast<const unsigned char*>(ihdr.data()), ihdr.size());
+    if (image.srgb) {
+        // sRGB (perceptual intent) and the gAMA the PNG specification pairs with it, for decoders
+        // that know only gAMA: 1/2.2 as 45455.
+        static const unsigned char kIntent[1] = {0};
+        write_chunk(write, "sRGB", kIntent, 1);
+        static const unsigned char kGamma[4] = {0, 0, 0xB1, 0x8F};
+        write_chunk(write, "gAMA", kGamma, 4);
+    }
     for (const auto& [key, value] : image.text) {
         const std::string text = key + '\0' + value;
         write_chunk(write, "tEXt", reinterpret_cast<const unsigned char*>(text.data()), text.size());

@@ -60,6 +60,12 @@ const std::vector<Setting>& render_settings_table() {
          "Another seed gives other, equally good sample values: an independent render of the same scene (a "
          "reference to measure noise against, or renders to average); 0 = the default",
          &S::seed, 0, 2147483647, {}, true},
+        {"view", "View transform",
+         "How linear values become 8-bit pixels (PNG, JPEG, BMP, PPM and the viewer; .exr and .pfm keep the "
+         "linear values): linear (clamped, as the lab's model and the course's images; the default except in "
+         "path mode), srgb (the sRGB curve: how pbrt, Mitsuba and Cycles show radiance; the default in path "
+         "mode), filmic (the ACES filmic fit, then sRGB: highlights roll off instead of clipping)",
+         &S::view, 0, 0, {"linear", "srgb", "filmic"}, false},
         {"time", "Scene time",
          "Scene time t: 'velocity x y z' moves by t·(x, y, z), 'angularrate ax ay az r' turns by r·t degrees (0 = "
          "the still image)",
@@ -112,6 +118,7 @@ void apply_mode_defaults(RenderSettings& s, bool course_scene) {
     if (!s.is_given("max-depth")) s.max_depth = path ? 64 : course_scene ? 4 : 5;
     if (!s.is_given("width")) s.width = course_scene ? 1024 : 640;
     if (!s.is_given("height")) s.height = course_scene ? 768 : 480;
+    if (!s.is_given("view")) s.view = path ? "srgb" : "linear";
 }
 
 std::string validate(RenderSettings& s) {
@@ -188,6 +195,10 @@ RenderJob make_render_job(const RenderSettings& s) {
     job.sampling.seed = std::uint32_t(s.seed);
     job.threads = s.threads;
     return job;
+}
+
+ViewTransform view_transform(const RenderSettings& s) {
+    return parse_view_transform(s.view).value_or(ViewTransform::Linear);
 }
 
 std::size_t memory_limit(const RenderSettings& s) {

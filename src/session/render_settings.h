@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "render/load_scene.h"
+#include "film/view_transform.h"
 #include "render/render_job.h"
 
 namespace whitted {
@@ -28,6 +29,7 @@ struct RenderSettings {
     float noise_threshold = 0.0f;
     int min_spp = 16;
     int seed = 0;
+    std::string view = "linear";  // the mode's default unless given: srgb in path mode
     float time = 0.0f;
     int threads = 0;
     bool lenient = false;
@@ -75,7 +77,8 @@ const Setting* find_setting(std::string_view name);
 const std::vector<const char*>& render_mode_names();
 
 // Sets every setting the user did not give to its default for s.mode (path: 64 samples per pixel
-// and 64 bounces; every other mode: the lab model's 1 and 5). A CSCI 1230 JSON scene (§9.5) is
+// and 64 bounces, shown through the sRGB curve; every other mode: the lab model's 1 and 5, linear).
+// A CSCI 1230 JSON scene (§9.5) is
 // drawn at the course's 1024 x 768 and depth 4 (the path tracer's 64 bounces still win in path mode).
 void apply_mode_defaults(RenderSettings& s, bool course_scene = false);
 
@@ -94,6 +97,8 @@ std::string pixel_key(const RenderSettings& s);
 
 // The render and the load the settings describe (the job without callbacks or cancel flag).
 RenderJob make_render_job(const RenderSettings& s);
+// The view transform of the 8-bit images (film/view_transform.h).
+ViewTransform view_transform(const RenderSettings& s);
 // The load's settings: limits of --untrusted, the memory left for the scene besides `image_bytes`.
 LoadOptions make_load_options(const RenderSettings& s, std::size_t image_bytes = 0);
 // The memory limit: --max-memory, else 1 GiB under --untrusted, else three quarters of the RAM.

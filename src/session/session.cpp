@@ -128,7 +128,7 @@ std::vector<int> Session::samples_per_pixel() const {
     return out;
 }
 
-bool Session::render_preview(int divisor, Image& out) const {
+bool Session::render_preview(int divisor, LinearImage& out) const {
     RenderJob small = job_;
     small.width = std::max(1, (job_.width + divisor - 1) / divisor);
     small.height = std::max(1, (job_.height + divisor - 1) / divisor);
@@ -140,8 +140,20 @@ bool Session::render_preview(int divisor, Image& out) const {
     small.on_tile = nullptr;
     Film film(small.width, small.height);
     if (render(*integrator_, small, film).cancelled) return false;
-    out = enlarge_nearest(film.to_image(), job_.width, job_.height);
+    out = enlarge_nearest(film.to_linear(), job_.width, job_.height);
     return true;
+}
+
+LinearImage enlarge_nearest(const LinearImage& small, int width, int height) {
+    LinearImage big{width, height, std::vector<glm::vec3>(std::size_t(width) * std::size_t(height)), {}};
+    if (small.width <= 0 || small.height <= 0) return big;
+    for (int y = 0; y < height; ++y) {
+        const int sy = int(std::int64_t(y) * small.height / height);
+        for (int x = 0; x < width; ++x)
+            big.rgb[std::size_t(y) * std::size_t(width) + std::size_t(x)] =
+                small.rgb[std::size_t(sy) * std::size_t(small.width) + std::size_t(std::int64_t(x) * small.width / width)];
+    }
+    return big;
 }
 
 Image enlarge_nearest(const Image& small, int width, int height) {

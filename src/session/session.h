@@ -89,8 +89,8 @@ public:
 
     // A coarse frame for a moving camera: the job's camera at 1/divisor of the size (the aspect
     // kept as well as whole pixels allow), one sample per pixel, enlarged (nearest) to the job's
-    // size. Returns false if cancelled.
-    bool render_preview(int divisor, Image& out) const;
+    // size: its mean colours, unclamped. Returns false if cancelled.
+    bool render_preview(int divisor, LinearImage& out) const;
 
     // The sum of the rays of every pass so far.
     const RayCounts& rays() const { return rays_; }
@@ -116,5 +116,6 @@ private:
 
 // The nearest-neighbour enlargement of `small` to width × height (a coarse frame shown full size).
 Image enlarge_nearest(const Image& small, int width, int height);
+LinearImage enlarge_nearest(const LinearImage& small, int width, int height);
 
 }  // namespace whitted

@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "film/image_io.h"
+#include "film/linear_decode.h"
+#include "film/view_transform.h"
 #include "cli/cli_scenes.h"
 #include "support/run_process.h"
 
@@ -279,6 +281,56 @@ TEST(Cli, ASeedGivesOtherSamplesAndTheSameSeedTheSameBytes) {
     ASSERT_FALSE(zero.empty());
     EXPECT_NE(zero, one) << "--seed 1 gave the samples of seed 0";
     EXPECT_EQ(bytes_of("1"), one);
+}
+
+// --view: path mode's PNG is its radiance through the sRGB curve (and says so in an sRGB chunk);
+// the lab's modes stay linear; a view given wins over the mode's.
+TEST(Cli, PathModeImagesAreSrgbEncodedAndTheLabsLinear) {
+    std::string dir = test::make_temp_dir();
+    std::string scene = test::source_dir() + "/scenes/features/cornell_box.sc";
+    auto render_to = [&](const std::string& out, std::vector<std::string> extra) {
+        std::vector<std::string> args = {test::cli_path(), scene, "-o", out, "--width", "32", "--height", "24",
+                                         "--spp", "4", "-q"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const auto r = run_process(args);
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+    };
+    render_to(dir + "/p.pfm", {"--mode", "path"});
+    render_to(dir + "/p.png", {"--mode", "path"});
+    render_to(dir + "/f.png", {"--mode", "path", "--view", "filmic"});
+    render_to(dir + "/w.pfm", {});
+    render_to(dir + "/w.png", {});
+    std::ifstream pfm_file(dir + "/p.pfm", std::ios::binary);
+    const std::string pfm_bytes((std::istreambuf_iterator<char>(pfm_file)), std::istreambuf_iterator<char>());
+    LinearImage radiance;
+    ASSERT_EQ(decode_linear_image(pfm_bytes, ImageLimits{}, radiance), "");
+    Image srgb, filmic;
+    ASSERT_EQ(read_image(dir + "/p.png", srgb), "");
+    ASSERT_EQ(read_image(dir + "/f.png", filmic), "");
+    int above_one = 0;
+    for (std::size_t i = 0; i < radiance.rgb.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            const float v = radiance.rgb[i][c];
+            above_one += v > 1.0f;
+            ASSERT_EQ(srgb.rgb[3 * i + std::size_t(c)], view_byte(ViewTransform::Srgb, v)) << i;
+            ASSERT_EQ(filmic.rgb[3 * i + std::size_t(c)], view_byte(ViewTransform::Filmic, v)) << i;
+        }
+    EXPECT_GT(above_one, 0) << "the light is brighter than white";
+    const auto file = [](const std::string& path) {
+        std::ifstream in(path, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    EXPECT_NE(file(dir + "/p.png").find("sRGB"), std::string::npos);
+    EXPECT_EQ(file(dir + "/w.png").find("sRGB"), std::string::npos);
+    // Whitted mode: the linear values clamped, byte for byte (scene-format.md §7).
+    std::ifstream wpfm(dir + "/w.pfm", std::ios::binary);
+    const std::string w_bytes((std::istreambuf_iterator<char>(wpfm)), std::istreambuf_iterator<char>());
+    LinearImage whitted_linear;
+    ASSERT_EQ(decode_linear_image(w_bytes, ImageLimits{}, whitted_linear), "");
+    Image lab;
+    ASSERT_EQ(read_image(dir + "/w.png", lab), "");
+    for (std::size_t i = 0; i < whitted_linear.rgb.size(); ++i)
+        for (int c = 0; c < 3; ++c) ASSERT_EQ(lab.rgb[3 * i + std::size_t(c)], to_byte(whitted_linear.rgb[i][c]));
 }
 
 TEST(Cli, ProgressLineOnlyOnATerminal) {

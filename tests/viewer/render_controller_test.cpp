@@ -679,6 +679,32 @@ TEST(RenderController, ARenderAgainKeepsTheOldPictureUntilItsTilesAreReplaced) {
     ASSERT_TRUE(c.wait(30s));
 }
 
+// The exposure scales the picture's radiance before the view transform, so a light brighter than
+// white (here a glowing ball of 4) comes back below white; changing either renders nothing again.
+TEST(RenderController, ExposureAndViewActOnTheRadianceNotOnTheBytes) {
+    test::SceneBuilder b;
+    b.add(ShapeKind::Sphere, test::translate_scale({0, 0, -5}, glm::vec3(2)), test::emitter(glm::vec3(4)));
+    RenderController c;
+    RenderJob s;
+    s.width = 16;
+    s.height = 16;
+    s.integrator.mode = RenderMode::Path;
+    c.start(std::make_shared<const Scene>(b.build()), s);
+    ASSERT_TRUE(c.wait(30s));
+    ASSERT_EQ(c.status().state, RenderState::Finished);
+    EXPECT_FLOAT_EQ(c.linear_image().rgb[8 * 16 + 8].x, 4.0f);
+    EXPECT_EQ(c.image().at(8, 8).x, 255);
+    const std::uint64_t job = c.status().job;
+    c.set_display(ViewTransform::Linear, -3.0f);  // 4 / 8
+    EXPECT_EQ(c.image().at(8, 8).x, 128);
+    c.set_display(ViewTransform::Srgb, -3.0f);
+    EXPECT_EQ(c.image().at(8, 8).x, 188);  // the sRGB curve at 0.5
+    EXPECT_FALSE(c.image().at(0, 0).x) << "the background stays black";
+    c.set_display(ViewTransform::Linear, 0.0f);
+    EXPECT_EQ(c.image().at(8, 8).x, 255);
+    EXPECT_EQ(c.status().job, job) << "no render again";
+}
+
 TEST(RenderController, EnlargingRepeatsEachPixelNearestNeighbour) {
     Image small(2, 1);
     small.rgb = {10, 20, 30, 40, 50, 60};

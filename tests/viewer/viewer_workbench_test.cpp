@@ -1,6 +1,10 @@
 // The workbench, on a real X server: the camera moved on the image, back home, into the
 // file; the error loop; what is remembered between runs.
 #ifdef WHITTED_VIEWER_PATH
+#include <fstream>
+#include <iterator>
+
+#include "film/linear_decode.h"
 #include "viewer/viewer_e2e_fixtures.h"
 
 namespace whitted {
@@ -192,8 +196,8 @@ TEST_F(ViewerWorkbench, OpenRecentOpensTheChosenScene) {
 }
 
 // Zoom with '+' (2x, nearest neighbour: each image pixel a 2 x 2 block) and exposure with ']'
-// (one stop: each byte doubled, clamped), about the centre of the area.
-TEST_F(ViewerWorkbench, ZoomShowsPixelsAsBlocksAndExposureDoublesTheBytes) {
+// (one stop: the radiance doubled, then clamped), about the centre of the area.
+TEST_F(ViewerWorkbench, ZoomShowsPixelsAsBlocksAndExposureDoublesTheRadiance) {
     auto viewer = start_viewer({});
     Ready first;
     ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
@@ -216,10 +220,20 @@ TEST_F(ViewerWorkbench, ZoomShowsPixelsAsBlocksAndExposureDoublesTheBytes) {
                                [](const Ready& n) { return n.image.w == kW && n.exposure == 1.0; }, 20s))
         << viewer->output();
     const Image bright = grab_screen(x_.display(), dir_ + "/exposed.png");
+    // The exposure doubles the radiance, not the bytes: each pixel is the conversion of twice the
+    // value whitted writes to a .pfm.
+    const auto cli = run_process({test::cli_path(), scene_, "-o", dir_ + "/red.pfm", "--width", std::to_string(kW),
+                                  "--height", std::to_string(kH), "-q"});
+    ASSERT_EQ(cli.exit_code, 0) << cli.output;
+    std::ifstream pfm(dir_ + "/red.pfm", std::ios::binary);
+    const std::string pfm_bytes((std::istreambuf_iterator<char>(pfm)), std::istreambuf_iterator<char>());
+    LinearImage radiance;
+    ASSERT_EQ(decode_linear_image(pfm_bytes, ImageLimits{}, radiance), "");
     wrong = 0;
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) {
-            const glm::ivec3 want = glm::min(glm::ivec3(red_.at(x, y)) * 2, glm::ivec3(255));
+            const glm::vec3 v = radiance.rgb[std::size_t(y) * kW + std::size_t(x)] * 2.0f;
+            const glm::ivec3 want(to_byte(v.x), to_byte(v.y), to_byte(v.z));
             wrong += glm::ivec3(bright.at(exposed.image.x + x, exposed.image.y + y)) != want;
         }
     EXPECT_EQ(wrong, 0) << "see " << dir_ << "/exposed.png";
