@@ -118,7 +118,7 @@ std::vector<Region> find_regions(const LinearImage& image, const LinearImage& re
 
 std::vector<double> fit_terms(const LinearImage& image, const LinearImage& reference,
                               const std::vector<LinearImage>& removals, const std::vector<std::uint8_t>& mask,
-                              double& explained) {
+                              double& explained, std::vector<double>* shares) {
     const std::size_t n = removals.size();
     std::vector<double> m(n * n, 0.0), b(n, 0.0), t(n);
     double total = 0.0;
@@ -145,6 +145,10 @@ std::vector<double> fit_terms(const LinearImage& image, const LinearImage& refer
     explained = total > 0.0 ? std::clamp(fitted / total, 0.0, 1.0) : 1.0;
     std::vector<double> coefficients(n);
     for (std::size_t k = 0; k < n; ++k) coefficients[k] = 1.0 + a[k];
+    if (shares) {
+        shares->assign(n, 0.0);
+        for (std::size_t k = 0; k < n && total > 0.0; ++k) (*shares)[k] = a[k] * a[k] * m[k * n + k] / total;
+    }
     return coefficients;
 }
 
@@ -190,8 +194,11 @@ Explanation explain_image(const Scene& scene, const RenderJob& job, const Linear
         if (m.changes_scene && m.psnr >= e.psnr + options.better_db) e.matches.push_back(m);
 
     if (!removals.empty()) {
-        const std::vector<double> c = fit_terms(image, reference, removals, mask, e.explained);
-        for (std::size_t k = 0; k < c.size(); ++k) e.terms.push_back(TermFit{removal_variants[k], c[k]});
+        std::vector<double> shares;
+        const std::vector<double> c = fit_terms(image, reference, removals, mask, e.explained, &shares);
+        for (std::size_t k = 0; k < c.size(); ++k) e.terms.push_back(TermFit{removal_variants[k], c[k], shares[k]});
+        std::stable_sort(e.terms.begin(), e.terms.end(),
+                         [](const TermFit& a, const TermFit& b) { return a.share > b.share; });
     }
 
     e.regions = find_regions(image, reference, mask, options.block, options.max_regions);

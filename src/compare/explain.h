@@ -42,6 +42,9 @@ struct VariantMatch {
 struct TermFit {
     Variant variant;            // the removal whose difference is the term's image
     double coefficient = 1.0;   // the image has coefficient × the reference's term
+    // The share of the difference's energy this term's change alone makes ((c − 1)²·|T|² / |D|²):
+    // a term whose image is faint where the pixels differ can take any coefficient for little.
+    double share = 0.0;
 };
 
 struct Region {
@@ -72,9 +75,10 @@ Explanation explain_image(const Scene& scene, const RenderJob& job, const Linear
                           const ExplainOptions& options = {});
 
 // The fit alone, for tests: coefficients c_k minimising Σ (image − reference − Σ (c_k − 1)·T_k)²
-// over the pixels where `mask` is set (T_k = reference − removals[k]); `explained` gets R².
+// over the pixels where `mask` is set (T_k = reference − removals[k]); `explained` gets R², and
+// `shares`, if given, each term's share as TermFit::share.
 std::vector<double> fit_terms(const LinearImage& image, const LinearImage& reference,
                               const std::vector<LinearImage>& removals, const std::vector<std::uint8_t>& mask,
-                              double& explained);
+                              double& explained, std::vector<double>* shares = nullptr);
 
 }  // namespace whitted

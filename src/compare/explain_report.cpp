@@ -11,6 +11,7 @@ namespace {
 
 constexpr double kTermTolerance = 0.1;  // a fitted coefficient this close to 1 is the reference's term
 constexpr double kFitExplains = 0.5;    // a fit explaining less than this share names no term
+constexpr double kTermShare = 0.05;     // a term named makes at least this share of the difference
 
 std::string fmt(const char* format, double v) {
     char buf[64];
@@ -125,12 +126,15 @@ std::string explain_text(const ExplainInputs& in, const ExplainOptions& o, const
         // A poor fit's coefficients are whatever soaks up another kind of difference: not named.
         int said = 0;
         for (const TermFit& t : e.terms)
-            if (const std::string words = term_words(t); !words.empty() && e.explained >= kFitExplains) {
+            if (const std::string words = term_words(t);
+                !words.empty() && e.explained >= kFitExplains && t.share >= kTermShare) {
                 s += "  " + words + ": your image has " + fmt("%.2f", t.coefficient) + " x the reference's " +
-                     t.variant.term + (t.variant.id == VariantId::NoShadowsFromLight ? "" : " term") + "\n";
+                     t.variant.term + (t.variant.id == VariantId::NoShadowsFromLight ? "" : " term") + " (" +
+                     fmt("%.0f%%", 100.0 * t.share) + " of the difference)\n";
                 ++said;
             }
-        if (said == 0 && e.explained >= kFitExplains) s += "  every term is as in the reference (within 10%)\n";
+        if (said == 0 && e.explained >= kFitExplains)
+            s += "  no single term makes 5% of the difference or is off by 10% or more\n";
         s += "  the fit explains " + fmt("%.0f%%", 100.0 * e.explained) + " of the difference" +
              (e.explained < kFitExplains ? ": no mix of the terms makes your image; the difference is of another "
                                            "kind (see the conventions and the regions)"
@@ -181,7 +185,7 @@ std::string explain_json(const ExplainInputs& in, const ExplainOptions& o, const
     s += ", \"variants\": " + list(e.variants, variant);
     s += ", \"terms\": " + list(e.terms, [](const TermFit& t) {
              return "{\"name\": " + json_string(t.variant.name) + ", \"term\": " + json_string(t.variant.term) +
-                    ", \"coefficient\": " + jnum(t.coefficient) + ", \"words\": " + json_string(term_words(t)) + "}";
+                    ", \"coefficient\": " + jnum(t.coefficient) + ", \"share\": " + jnum(t.share) + ", \"words\": " + json_string(term_words(t)) + "}";
          });
     s += ", \"explained\": " + jnum(e.explained);
     s += ", \"regions\": " + list(e.regions, [&](const Region& g) {
