@@ -36,8 +36,8 @@ int run(int argc, char** argv) {
                  "transmission, each light's shadows) and shows the worst regions with the inspector's account of "
                  "their centre pixels. docs/compare.md has a worked example.",
                  "whitted explain"};
-    app.footer("Exit codes (as whitted compare): 0 no difference, 1 WARNING, 2 FAILURE (the image differs), 3 the image "
-               "is not the --width/--height given, 4 the image cannot be read or the error image written, 5 bad "
+    app.footer("Exit codes (as whitted compare): 0 no difference, 1 WARNING, 2 FAILURE (the image differs), 3 the "
+               "image is not the --width/--height given, 4 the image cannot be read or the error image written, 5 bad "
                "usage, 6 bad scene; 130 interrupted.");
     RenderOptions o;
     std::string image_path, diff_path;

@@ -185,7 +185,8 @@ std::string explain_json(const ExplainInputs& in, const ExplainOptions& o, const
     s += ", \"variants\": " + list(e.variants, variant);
     s += ", \"terms\": " + list(e.terms, [](const TermFit& t) {
              return "{\"name\": " + json_string(t.variant.name) + ", \"term\": " + json_string(t.variant.term) +
-                    ", \"coefficient\": " + jnum(t.coefficient) + ", \"share\": " + jnum(t.share) + ", \"words\": " + json_string(term_words(t)) + "}";
+                    ", \"coefficient\": " + jnum(t.coefficient) + ", \"share\": " + jnum(t.share) +
+                    ", \"words\": " + json_string(term_words(t)) + "}";
          });
     s += ", \"explained\": " + jnum(e.explained);
     s += ", \"regions\": " + list(e.regions, [&](const Region& g) {

@@ -113,7 +113,8 @@ std::optional<Scene> changed_scene(const Scene& scene, VariantId id) {
 }  // namespace
 
 std::vector<Variant> explain_variants(const Scene& scene, const RenderJob& job) {
-    const bool whitted_shading = job.integrator.mode == RenderMode::Whitted && scene.data.lighting == LightingModel::Labs;
+    const bool whitted_shading =
+        job.integrator.mode == RenderMode::Whitted && scene.data.lighting == LightingModel::Labs;
     std::vector<Variant> out;
     for (const Named& n : kMistakes)
         if (whitted_shading || !n.shading) out.push_back(Variant{n.id, -1, n.name, n.words, false, ""});

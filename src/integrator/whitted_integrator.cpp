@@ -83,7 +83,7 @@ glm::vec3 WhittedIntegrator::through_glass(const LightSample& ls, const glm::vec
 
 void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sampler, glm::vec3 (&out)[kPacketSize],
                                  RayCounts& counts) const {
-    if (variant_) {
+    if (variant_) {  // a classic mistake made on purpose (whitted explain): its switches are read one ray at a time
         for (int l = 0; l < kPacketSize; ++l)
             if ((batch.active >> l) & 1) out[l] = radiance(batch.rays[l], batch.keys[l], sampler, counts);
         return;
@@ -150,7 +150,8 @@ glm::vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const glm::vec3& w
 WhittedIntegrator::ShadingPoint WhittedIntegrator::shading_point(const Ray& ray, const Hit& hit) const {
     ShadingPoint p;
     p.s = surface_at(scene_, ray, hit);
-    if (variant_ && conventions_.normals_by_m) p.s.normal = normal_by_m(scene_.data.instances[hit.instance], p.s.object_normal);
+    if (variant_ && conventions_.normals_by_m)
+        p.s.normal = normal_by_m(scene_.data.instances[hit.instance], p.s.object_normal);
     p.dir = glm::normalize(ray.direction);
     p.outside = glm::dot(p.s.normal, -p.dir) >= 0.0f;
     p.n = p.outside ? p.s.normal : -p.s.normal;  // faces the viewer: lighting only

@@ -233,7 +233,10 @@ TEST(Explain, RegionsAreTheBlocksThatDiffer) {
     LinearImage image = plain_render(*scene, job);
     // Two separate patches: 3 × 3 pixels at (5, 5) changed by 0.5, one pixel at (50, 40) by 0.2.
     for (int y = 5; y < 8; ++y)
-        for (int x = 5; x < 8; ++x) image.rgb[std::size_t(y) * kWidth + x] = glm::vec3(1.0f) - image.rgb[std::size_t(y) * kWidth + x];
+        for (int x = 5; x < 8; ++x) {
+            glm::vec3& p = image.rgb[std::size_t(y) * kWidth + x];
+            p = glm::vec3(1.0f) - p;
+        }
     image.rgb[std::size_t(40) * kWidth + 50].x = image.rgb[std::size_t(40) * kWidth + 50].x > 0.5f ? 0.0f : 1.0f;
     const Explanation e = explain_image(*scene, job, image);
     ASSERT_EQ(e.regions.size(), 2u);
