@@ -9,6 +9,7 @@
 
 #include "accel/scene.h"
 #include "compare_command.h"
+#include "explain_command.h"
 #include "film/image_io.h"
 #include "inspect_command.h"
 #include "interrupt.h"
@@ -197,6 +198,7 @@ int run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "compare") return whitted::cli::compare_main(argc - 1, argv + 1);
+    if (argc > 1 && std::string(argv[1]) == "explain") return whitted::cli::explain_main(argc - 1, argv + 1);
     try {
         return run(argc, argv);
     } catch (const std::bad_alloc&) {

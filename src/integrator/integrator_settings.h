@@ -2,6 +2,7 @@
 // How to render: the method and its recursion limit. Settings only, so that whatever describes a
 // render (render/render_job.h) names them without pulling in an integrator.
 #include "cs1230/stage.h"
+#include "integrator/conventions.h"
 #include "integrator/render_mode.h"
 
 namespace whitted {
@@ -11,6 +12,8 @@ struct IntegratorSettings {
     int max_depth = 5;  // camera ray = depth 0; no ray deeper than this is traced (path: bounces)
     // Which of the course's projects draws a CSCI 1230 scene in Whitted mode (§9.5).
     cs1230::Stage cs1230_stage = cs1230::Stage::Illuminate;
+    // The lab's classic mistakes, made on purpose (whitted explain); §7 Whitted shading only.
+    Conventions conventions{};
     bool operator==(const IntegratorSettings&) const = default;
 };
 

@@ -27,8 +27,9 @@ bool refract(const glm::vec3& d, const glm::vec3& n, float eta, glm::vec3& out) 
 
 }  // namespace
 
-WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Camera& camera, int max_depth)
-    : Integrator(scene, camera), max_depth_(max_depth) {}
+WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Camera& camera, int max_depth,
+                                     const Conventions& conventions)
+    : Integrator(scene, camera), max_depth_(max_depth), conventions_(conventions), variant_(conventions.any()) {}
 
 glm::vec3 WhittedIntegrator::radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler,
                                       RayCounts& counts) const {
@@ -62,7 +63,7 @@ LightSample WhittedIntegrator::light_sample(const Light& light, std::size_t li, 
 // What reaches `start` (just off the lit side of a surface) from the light sample: 1 if nothing
 // is in the way, 0 behind anything opaque, the product of the transparent colours crossed otherwise.
 glm::vec3 WhittedIntegrator::shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start) const {
-    if (query_from_light(light, ls, start)) {
+    if (query_from_light(light, ls, start) && !conventions_.shadows_beyond_light) {
         // From the light to the point (t in (0, 1)): the nearest thing on the way decides it,
         // unless it is glass, whose every crossing on the way counts.
         Hit h;
@@ -74,12 +75,19 @@ glm::vec3 WhittedIntegrator::shadow_factor(const Light& light, const LightSample
 
 // The full query from the point toward the light: every transparent surface crossed tints it.
 glm::vec3 WhittedIntegrator::through_glass(const LightSample& ls, const glm::vec3& start) const {
-    const float reach = std::isinf(ls.distance) ? kInfinity : glm::length(ls.position - start);
+    const float reach = std::isinf(ls.distance) || conventions_.shadows_beyond_light ? kInfinity
+                                                                                     : glm::length(ls.position - start);
+    if (conventions_.opaque_shadows) return glm::vec3(scene_.occluded(Ray{start, ls.to_light}, reach) ? 0.0f : 1.0f);
     return glass_transmittance(scene_, Ray{start, ls.to_light}, reach);
 }
 
 void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sampler, glm::vec3 (&out)[kPacketSize],
                                  RayCounts& counts) const {
+    if (variant_) {  // a classic mistake made on purpose (whitted explain): its switches are read one ray at a time
+        for (int l = 0; l < kPacketSize; ++l)
+            if ((batch.active >> l) & 1) out[l] = radiance(batch.rays[l], batch.keys[l], sampler, counts);
+        return;
+    }
     const SceneData& flat = scene_.data;
     const unsigned active = batch.active;
     Hit hits[kPacketSize];
@@ -142,10 +150,12 @@ glm::vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const glm::vec3& w
 WhittedIntegrator::ShadingPoint WhittedIntegrator::shading_point(const Ray& ray, const Hit& hit) const {
     ShadingPoint p;
     p.s = surface_at(scene_, ray, hit);
+    if (variant_ && conventions_.normals_by_m)
+        p.s.normal = normal_by_m(scene_.data.instances[hit.instance], p.s.object_normal);
     p.dir = glm::normalize(ray.direction);
     p.outside = glm::dot(p.s.normal, -p.dir) >= 0.0f;
     p.n = p.outside ? p.s.normal : -p.s.normal;  // faces the viewer: lighting only
-    const float offset = surface_offset(p.s.point);
+    const float offset = variant_ && conventions_.no_offset ? 0.0f : surface_offset(p.s.point);
     p.above = p.s.point + offset * p.n;  // the viewer's side of the surface
     p.below = p.s.point - offset * p.n;
     return p;
@@ -203,6 +213,7 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
         const ShadowQuery known = li < packet_lights ? shadows->query[li][lane] : ShadowQuery::Unknown;
         const glm::vec3 shadow = known == ShadowQuery::Lit                  ? glm::vec3(1.0f)
                                  : known == ShadowQuery::Blocked            ? glm::vec3(0.0f)
+                                 : li < 32 && (conventions_.unshadowed_lights >> li) & 1u ? glm::vec3(1.0f)
                                  : known == ShadowQuery::Glass || depth > 0 ? through_glass(ls, above)
                                                                             : shadow_factor(light, ls, above);
         if (max_component(shadow) <= 0.0f) {
@@ -211,6 +222,7 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
         }
         glm::vec3 r = 2.0f * n_dot_l * n - ls.to_light;
         float r_dot_v = glm::dot(r, to_eye);
+        if (conventions_.blinn_phong) r_dot_v = glm::dot(n, glm::normalize(ls.to_light + to_eye));  // N·H in its place
         float spec = r_dot_v > 0.0f ? std::pow(r_dot_v, m.shine) : 0.0f;
         color += shadow * ls.intensity * (s.diffuse * n_dot_l + m.specular * spec);
         if constexpr (Recorder::kRecords)
@@ -249,7 +261,8 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
                               Ray{below, refracted}, w);
             }
         } else {
-            reflect_weight += m.transparent;  // total internal reflection: one mirror ray carries both
+            if (!conventions_.no_total_internal_reflection)
+                reflect_weight += m.transparent;  // total internal reflection: one mirror ray carries both
             rec.total_internal_reflection();
         }
     }

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "integrator/conventions.h"
 #include "integrator/integrator.h"
 #include "integrator/light_sample.h"
 #include "integrator/shading_record.h"
@@ -22,7 +23,7 @@ constexpr std::uint32_t kMaxSecondaryRays = 4094;
 
 class WhittedIntegrator final : public Integrator {
 public:
-    WhittedIntegrator(const Scene& scene, const Camera& camera, int max_depth);
+    WhittedIntegrator(const Scene& scene, const Camera& camera, int max_depth, const Conventions& conventions = {});
 
     // The camera rays' nearest hits are found a packet at a time, and the shadow rays toward
     // point and spot lights from those hits are traced as packets too; every colour is exactly
@@ -81,6 +82,8 @@ private:
                              std::uint32_t dim, const SampleContext& ctx, glm::vec3& out) const;
 
     int max_depth_;
+    Conventions conventions_;
+    bool variant_;  // conventions_.any(): camera rays one at a time, where the switches are read
 };
 
 // Distance by which secondary rays leave a surface, relative to the point's magnitude so that
