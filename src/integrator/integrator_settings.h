@@ -11,6 +11,11 @@ struct IntegratorSettings {
     int max_depth = 5;  // camera ray = depth 0; no ray deeper than this is traced (path: bounces)
     // Which of the course's projects draws a CSCI 1230 scene in Whitted mode (§9.5).
     cs1230::Stage cs1230_stage = cs1230::Stage::Illuminate;
+    // Path mode's caustics from point, spot and directional lights (integrator/caustic_integrator.h):
+    // photons emitted per sample index (0 = none), and the gather radius of the first sample in
+    // world units (0 = from the scene's size).
+    int photons = 1 << 16;
+    float photon_radius = 0.0f;
 };
 
 }  // namespace whitted
