@@ -28,10 +28,10 @@ glm::vec3 spawn(const glm::vec3& p, const glm::vec3& outward, const glm::vec3& w
     return p + (glm::dot(w, outward) > 0.0f ? off : -off) * outward;
 }
 
-// A photon's numbers: SplitMix64 from a hash of (seed and block, photon), independent of any thread.
+// A photon's numbers: SplitMix64 from a hash of (seed and sample index, photon), independent of any thread.
 class PhotonRandom {
 public:
-    PhotonRandom(std::uint64_t block, std::uint64_t index) : state_(mix(block * 0x9E3779B97F4A7C15ull ^ mix(index))) {}
+    PhotonRandom(std::uint64_t key, std::uint64_t index) : state_(mix(key * 0x9E3779B97F4A7C15ull ^ mix(index))) {}
     float next() { return float(mix(state_ += 0x9E3779B97F4A7C15ull) >> 40) * 0x1p-24f; }
     glm::vec2 next2() {
         const float a = next();
@@ -66,22 +66,17 @@ CausticIntegrator::CausticIntegrator(const Scene& scene, const Camera& camera, c
     r0_ = settings.radius > 0.0f ? settings.radius : std::max(1e-6f, diagonal / 500.0f);
 }
 
-int CausticIntegrator::block_of(int index) {
-    int b = 0;
-    while (index > 0) ++b, index >>= 1;
-    return std::min(b, kBlocks - 1);
+float CausticIntegrator::radius_of_sample(int s) const {
+    return r0_ * std::sqrt(std::pow(float(s) + 1.0f, kAlpha - 1.0f));
 }
 
-float CausticIntegrator::radius_of_block(int block) const {
-    const float begin = block == 0 ? 0.0f : std::ldexp(1.0f, block - 1), end = std::ldexp(1.0f, block);
-    const float middle = 0.5f * (begin + end - 1.0f);
-    return r0_ * std::sqrt(std::pow(middle + 1.0f, kAlpha - 1.0f));
+const PhotonMap& CausticIntegrator::photon_map(int s) const {
+    static const PhotonMap empty;
+    return s >= prepared_.begin && s < prepared_.end ? maps_[std::size_t(s - prepared_.begin)].map : empty;
 }
 
-const PhotonMap& CausticIntegrator::photon_map(int index) const { return maps_[block_of(index)].map; }
-
-void CausticIntegrator::trace_photon(std::uint64_t block, std::uint64_t index, std::vector<Photon>& out) const {
-    PhotonRandom rng(block, index);
+void CausticIntegrator::trace_photon(std::uint64_t key, std::uint64_t index, std::vector<Photon>& out) const {
+    PhotonRandom rng(key, index);
     const float u_light = rng.next();
     const glm::vec2 u_point = rng.next2(), u_dir = rng.next2();
     EmittedPhoton e = emitter_.emit(u_light, u_point, u_dir);
@@ -129,63 +124,65 @@ void CausticIntegrator::trace_photon(std::uint64_t block, std::uint64_t index, s
 }
 
 bool CausticIntegrator::prepare(const SampleRange& range) const {
-    if (range.seed != seed_)
-        for (Block& b : maps_) b = Block{};
-    seed_ = range.seed;
-    const int first = block_of(range.begin), last = range.end > range.begin ? block_of(range.end - 1) : first - 1;
-    for (int b = 0; b < kBlocks; ++b) {
-        if (b >= first && b <= last) {
-            if (!maps_[b].ready && !trace_block(b, range)) return false;
-        } else if (maps_[b].ready) {
-            maps_[b] = Block{};  // only the maps of the samples rendered now are kept
-        }
-    }
-    return true;
-}
-
-bool CausticIntegrator::trace_block(int block, const SampleRange& range) const {
-    Block& out = maps_[block];
-    out = Block{};
+    if (range.begin == prepared_.begin && range.end == prepared_.end && range.seed == prepared_.seed) return true;
+    maps_.clear();
     stats_ = {};
-    const std::size_t samples = block == 0 ? 1 : std::size_t(1) << (block - 1);
-    const std::size_t target = emitter_.empty() ? 0 : samples * std::size_t(settings_.photons_per_sample);
-    const float radius = radius_of_block(block);
-    const std::uint64_t key = (std::uint64_t(range.seed) << 32) ^ std::uint64_t(block);
-    const std::size_t chunks = (target + kChunk - 1) / kChunk;
-    std::vector<Photon> photons;
+    prepared_ = {-1, -1, 0, 0, nullptr};
+    const std::size_t samples = std::size_t(std::max(0, range.end - range.begin));
+    const std::size_t per = emitter_.empty() ? 0 : std::size_t(settings_.photons_per_sample);
+    // The budget, shared by the samples: each may store its share (at least one chunk's worth).
+    const std::size_t cap = samples ? std::max(kChunk, settings_.max_stored / samples) : 0;
+    const std::size_t chunks = (per + kChunk - 1) / kChunk;  // per sample
+    std::vector<std::vector<Photon>> photons(samples);
+    std::vector<std::size_t> emitted(samples, 0);
+    std::vector<std::uint8_t> cut(samples, 0);
     std::vector<std::vector<Photon>> wave(kWave);
-    std::size_t emitted = 0;
-    bool cut = false;
-    for (std::size_t c0 = 0; c0 < chunks && !cut; c0 += kWave) {
-        const std::size_t n = std::min(kWave, chunks - c0);
+    // Work items are (sample, chunk) pairs in order, traced a wave at a time on the job's threads,
+    // then appended in order: sample k's chunks stop at the first that would pass its share.
+    const std::size_t items = samples * chunks;
+    for (std::size_t i0 = 0; i0 < items; i0 += kWave) {
+        const std::size_t n = std::min(kWave, items - i0);
         std::atomic<bool> stopped{false};
         parallel_for(n, worker_count(range.threads, n), [&](std::size_t k, int) {
             wave[k].clear();
+            const std::size_t item = i0 + k, sample = item / chunks, chunk = item % chunks;
+            if (cut[sample]) return;
             if (range.cancel && range.cancel->load(std::memory_order_relaxed)) {
                 stopped = true;
                 return;
             }
-            const std::size_t from = (c0 + k) * kChunk, to = std::min(target, from + kChunk);
+            const std::uint64_t key = (std::uint64_t(range.seed) << 32) ^ std::uint64_t(range.begin + int(sample));
+            const std::size_t from = chunk * kChunk, to = std::min(per, from + kChunk);
             for (std::size_t i = from; i < to; ++i) trace_photon(key, i, wave[k]);
         });
-        if (stopped || (range.cancel && range.cancel->load())) return false;
+        if (stopped || (range.cancel && range.cancel->load())) {
+            maps_.clear();
+            return false;
+        }
         for (std::size_t k = 0; k < n; ++k) {
-            if (photons.size() + wave[k].size() > settings_.max_stored) {
-                cut = true;  // this chunk and the rest are not emitted
-                break;
+            const std::size_t item = i0 + k, sample = item / chunks, chunk = item % chunks;
+            if (cut[sample]) continue;
+            if (photons[sample].size() + wave[k].size() > cap) {
+                cut[sample] = 1;  // this chunk and the sample's later ones are not emitted
+                continue;
             }
-            photons.insert(photons.end(), wave[k].begin(), wave[k].end());
-            emitted = std::min(target, (c0 + k + 1) * kChunk);
+            photons[sample].insert(photons[sample].end(), wave[k].begin(), wave[k].end());
+            emitted[sample] = std::min(per, (chunk + 1) * kChunk);
         }
     }
-    stats_.emitted = emitted;
-    stats_.stored = photons.size();
-    stats_.radius = radius;
-    stats_.cut = cut;
-    out.map.build(std::move(photons), radius);
-    stats_.bytes = out.map.bytes();
-    out.scale = emitted > 0 ? 1.0f / (kPi * radius * radius * float(emitted)) : 0.0f;
-    out.ready = true;
+    maps_.resize(samples);
+    for (std::size_t k = 0; k < samples; ++k) {
+        const float radius = radius_of_sample(range.begin + int(k));
+        stats_.emitted += emitted[k];
+        stats_.stored += photons[k].size();
+        stats_.cut = stats_.cut || cut[k];
+        maps_[k].map.build(std::move(photons[k]), radius);
+        maps_[k].scale = emitted[k] > 0 ? 1.0f / (kPi * radius * radius * float(emitted[k])) : 0.0f;
+        stats_.bytes += maps_[k].map.bytes();
+    }
+    stats_.radius = samples ? radius_of_sample(range.begin) : 0.0f;
+    prepared_ = range;
+    prepared_.cancel = nullptr;
     return true;
 }
 
@@ -203,8 +200,9 @@ void CausticIntegrator::radiance(const CameraBatch& batch, const Sampler& sample
 
 glm::vec3 CausticIntegrator::caustic(const Ray& camera_ray, const SampleKey& key, const Sampler& sampler,
                                      RayCounts& counts, const Hit* first, bool first_known) const {
-    const Block& block = maps_[block_of(int(key.index))];
-    if (block.map.size() == 0) return glm::vec3(0.0f);
+    const int k = int(key.index) - prepared_.begin;
+    if (k < 0 || k >= int(maps_.size()) || maps_[std::size_t(k)].map.size() == 0) return glm::vec3(0.0f);
+    const SampleMap& sample_map = maps_[std::size_t(k)];
     Ray ray = camera_ray;
     glm::vec3 beta(1.0f);
     for (int bounce = 0; bounce < settings_.max_bounces; ++bounce) {
@@ -221,8 +219,8 @@ glm::vec3 CausticIntegrator::caustic(const Ray& camera_ray, const SampleKey& key
         const float p_gather = bsdf.non_delta_probability();
         if (u.x < p_gather) {
             glm::vec3 sum(0.0f);
-            block.map.for_each_near(s.point, [&](const Photon& ph) { sum += bsdf.f(ph.wi) * ph.power; });
-            return beta * sum * (block.scale / p_gather);
+            sample_map.map.for_each_near(s.point, [&](const Photon& ph) { sum += bsdf.f(ph.wi) * ph.power; });
+            return beta * sum * (sample_map.scale / p_gather);
         }
         const BsdfSample bs = bsdf.sample(u.x, u);  // a delta lobe: the direction needs no numbers
         if (!bs.valid || !bs.delta || max_component(bs.weight) <= 0.0f) return glm::vec3(0.0f);

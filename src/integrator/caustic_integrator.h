@@ -12,20 +12,20 @@
 // by the BSDF with Russian roulette. A camera sample follows delta lobes to the first vertex that
 // draws a non-delta one and gathers there the photons within radius r: Σ f · Φ / (π r² N).
 //
-// Progressive photon mapping as Knaus and Zwicker's probabilistic formulation (2011): the samples
-// of block b of sample indices ([0, 1), [1, 2), [2, 4), [4, 8) …) share one photon map of
-// (samples in the block) · photons photons with the radius r² = r0² · (s + 1)^(α − 1), s the middle
-// sample of the block and α = 2/3; each sample's estimate is an independent, slightly biased one
-// whose bias and variance both vanish as the samples grow, so the mean the film keeps converges,
-// with no per-pixel state. The blocks are fixed by the sample index, not by the passes: a render
-// in passes, in one go or shared among MPI ranks draws every sample from the same map. Photon i of
-// a block is traced from numbers hashed from (seed, block, i), never from a thread, and the map is
-// built in photon order: the same bytes for any thread count, tile size or rank.
+// Progressive photon mapping as Knaus and Zwicker's probabilistic formulation (2011): sample index
+// s of every pixel gathers from a photon map of its own, `photons` photons traced for it alone, with
+// the radius r_s² = r0² · (s + 1)^(α − 1), α = 2/3. Each sample's estimate is then independent of
+// the others and slightly biased, bias and variance both vanishing as s grows, so the mean the film
+// keeps converges (its error as N^(−1/3)) with no per-pixel state: passes, checkpoints, the viewer
+// and MPI ranks work as for any other integrator. The maps depend on the sample index alone, never
+// on the passes: a render in passes, in one go or shared among ranks gathers from the same photons.
+// Photon i of sample s is traced from numbers hashed from (seed, s, i), never from a thread, and
+// each map is built in photon order: the same bytes for any thread count, tile size or rank.
 //
-// Memory: at most max_stored photons a block (bytes_per_photon() each, measured by PhotonMap::bytes);
-// a block that would store more emits fewer photons (whole chunks of them, decided in photon order).
-// The maps of the blocks of the samples being rendered are kept: one or two for a session's pass
-// (doubling passes are blocks unless aa² is no power of two), log2(spp) + 1 for a render in one go.
+// Memory: the maps of the samples being rendered are kept (a pass of n samples: n maps), at most
+// max_stored photons in all (bytes_per_photon() each at most; PhotonMap::bytes measures them). When
+// the pass's photons would store more, each of its samples emits fewer (whole chunks, decided in
+// photon order): still deterministic, no longer the photons of a render in other passes.
 #include <atomic>
 #include <cstdint>
 
@@ -44,14 +44,14 @@ struct CausticSettings {
     int max_bounces = 64;
     int photons_per_sample = 1 << 16;  // emitted, per sample index
     float radius = 0.0f;               // r0 in world units; 0 = 1/500 of the scene's bounding diagonal
-    std::size_t max_stored = std::size_t(1) << 21;  // photons a block may store
+    std::size_t max_stored = std::size_t(1) << 23;  // photons the maps of one prepare() may store
 };
 
 struct PhotonPassStats {
     std::size_t emitted = 0, stored = 0;
     std::size_t bytes = 0;  // the map's memory
     float radius = 0.0f;
-    bool cut = false;  // the photon budget stopped the block early
+    bool cut = false;  // the photon budget cut the samples' photons
 };
 
 class CausticIntegrator final : public Integrator {
@@ -67,35 +67,31 @@ public:
     glm::vec3 caustic(const Ray& ray, const SampleKey& key, const Sampler& sampler, RayCounts& counts,
                       const Hit* first = nullptr, bool first_known = false) const;
 
-    // The block of sample indices a sample belongs to, and the radius of its map.
-    static int block_of(int index);
-    float radius_of_block(int block) const;
-    // The photons of the last block traced; the map sample `index` gathers from (empty if not prepared).
+    // The gather radius of sample index s.
+    float radius_of_sample(int s) const;
+    // The photons of the last prepare(); the map sample index s gathers from (empty if not prepared).
     const PhotonPassStats& last_pass() const { return stats_; }
-    const PhotonMap& photon_map(int index = 0) const;
+    const PhotonMap& photon_map(int s = 0) const;
     // Photon, hash-grid bucket and build scratch: what a stored photon costs at most.
     static constexpr std::size_t bytes_per_photon() { return sizeof(Photon) + 4 * sizeof(std::uint32_t); }
 
 private:
-    // Traces photon `index` of the block keyed `block`, appending what it stores to `out`.
-    void trace_photon(std::uint64_t block, std::uint64_t index, std::vector<Photon>& out) const;
-    // Traces block b's photons into maps_[b]; false if cancelled.
-    bool trace_block(int block, const SampleRange& range) const;
+    // Traces photon `index` keyed `key` (seed and sample index), appending what it stores to `out`.
+    void trace_photon(std::uint64_t key, std::uint64_t index, std::vector<Photon>& out) const;
 
-    static constexpr int kBlocks = 25;  // sample indices below 2^24 (Sampler::kMaxSpp · kMaxAa²)
-    struct Block {
+    struct SampleMap {
         PhotonMap map;
         float scale = 0.0f;  // 1 / (π r² · photons emitted)
-        bool ready = false;
     };
 
     PathIntegrator path_;
     CausticSettings settings_;
     PhotonEmitter emitter_;
     float r0_;
-    // The maps of the samples last prepared (built by prepare, read by radiance), under seed_.
-    mutable Block maps_[kBlocks];
-    mutable std::uint32_t seed_ = 0;
+    // The maps of the samples last prepared (built by prepare, read by radiance): sample indices
+    // [prepared_.begin, prepared_.end) under prepared_.seed.
+    mutable std::vector<SampleMap> maps_;
+    mutable SampleRange prepared_{-1, -1, 0, 0, nullptr};
     mutable PhotonPassStats stats_;
 };
 
