@@ -37,7 +37,9 @@ public:
     // Draws a lobe with u_lobe and a direction with u.
     BsdfSample sample(float u_lobe, glm::vec2 u) const;
 
-    bool has_non_delta() const { return p_[0] + p_[1] + (gloss_ > 0 ? p_[2] + p_[3] : 0.0f) > 0.0f; }
+    bool has_non_delta() const { return non_delta_probability() > 0.0f; }
+    // The probability that sample() draws a non-delta lobe (the delta lobes come after them).
+    float non_delta_probability() const { return p_[0] + p_[1] + (gloss_ > 0 ? p_[2] + p_[3] : 0.0f); }
     bool black() const { return p_[0] + p_[1] + p_[2] + p_[3] <= 0.0f; }
     const glm::vec3& normal() const { return n_; }  // faces the viewer
 

@@ -4,6 +4,8 @@
 // of camera samples, a packet at a time, so that it can trace them together; each sample names
 // its pixel and index, from which the integrator draws any further numbers it needs (a point on
 // an area light, a glossy direction) through the render's Sampler.
+#include <atomic>
+#include <cstdint>
 #include <memory>
 
 #include <glm/glm.hpp>
@@ -17,6 +19,14 @@
 namespace whitted {
 
 struct Scene;  // accel/scene.h: what an integrator asks its rays of
+
+// The samples about to be rendered, for work an integrator does once before them (a photon pass).
+struct SampleRange {
+    int begin = 0, end = 0;  // sample indices [begin, end) of every pixel
+    std::uint32_t seed = 0;  // the sampler's seed
+    int threads = 0;         // 0 = all hardware threads
+    const std::atomic<bool>* cancel = nullptr;
+};
 
 // Camera samples traced together: the lanes set in `active`.
 struct CameraBatch {
@@ -37,6 +47,14 @@ public:
     // Whether a pixel's samples are clamped to [0, 1] before their mean is taken: anti-aliasing
     // of displayed colours (§7), as the Whitted model always did. A radiance estimator keeps them.
     virtual bool clamps_samples() const { return true; }
+
+    // Called by the renderer before the tiles of `range` are rendered, from one thread, never while
+    // radiance() runs: what it prepares (mutable state) is then read by every tile. Returns false
+    // when range.cancel stopped it (nothing may be rendered then).
+    virtual bool prepare(const SampleRange& range) const {
+        (void)range;
+        return true;
+    }
 
     const Scene& scene() const { return scene_; }
     const Camera& camera() const { return camera_; }

@@ -14,6 +14,11 @@ struct IntegratorSettings {
     cs1230::Stage cs1230_stage = cs1230::Stage::Illuminate;
     // The lab's classic mistakes, made on purpose (whitted explain); §7 Whitted shading only.
     Conventions conventions{};
+    // Path mode's caustics from point, spot and directional lights (integrator/caustic_integrator.h):
+    // photons emitted per sample index (0 = none), and the gather radius of the first sample in
+    // world units (0 = from the scene's size).
+    int photons = 1 << 16;
+    float photon_radius = 0.0f;
     bool operator==(const IntegratorSettings&) const = default;
 };
 

@@ -1,4 +1,5 @@
 // The one place that maps a render mode to its integrator.
+#include "integrator/caustic_integrator.h"
 #include "integrator/cs1230_integrator.h"
 #include "integrator/debug_views.h"
 #include "integrator/integrator.h"
@@ -18,7 +19,16 @@ std::unique_ptr<Integrator> make_integrator(const Scene& scene, const Camera& ca
         case RenderMode::Raycast: return std::make_unique<RaycastIntegrator>(scene, camera);
         case RenderMode::Normals: return std::make_unique<NormalsIntegrator>(scene, camera);
         case RenderMode::Depth: return std::make_unique<DepthIntegrator>(scene, camera);
-        case RenderMode::Path: return std::make_unique<PathIntegrator>(scene, camera, settings.max_depth);
+        case RenderMode::Path:
+            // Photons only where they carry light: every other scene gets the path tracer alone.
+            if (settings.photons > 0 && scene_has_caustic_paths(scene.data)) {
+                CausticSettings c;
+                c.max_bounces = settings.max_depth;
+                c.photons_per_sample = settings.photons;
+                c.radius = settings.photon_radius;
+                return std::make_unique<CausticIntegrator>(scene, camera, c);
+            }
+            return std::make_unique<PathIntegrator>(scene, camera, settings.max_depth);
     }
     return nullptr;
 }

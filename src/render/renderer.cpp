@@ -44,6 +44,20 @@ RenderStats run_tiles(const Integrator& integrator, const RenderJob& job, const 
     RenderStats stats;
     stats.tiles_total = int(tiles.size());
     stats.threads = threads;
+    // Work the integrator does once for these samples (a photon pass), on the job's threads: the
+    // same samples as every tile's (TileRenderer's range), so every MPI rank prepares the same.
+    const int n = job.sampling.samples_per_pixel();
+    SampleRange range;
+    range.begin = std::clamp(job.sampling.adaptive() ? 0 : job.sample_begin, 0, n);
+    range.end = job.sampling.adaptive() || job.sample_end < 0 ? n : std::clamp(job.sample_end, range.begin, n);
+    range.seed = job.sampling.seed;
+    range.threads = job.threads;
+    range.cancel = job.cancel;
+    if (!tiles.empty() && !integrator.prepare(range)) {
+        stats.cancelled = true;
+        stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return stats;
+    }
 
     // One renderer (scratch buffers, ray counts) per worker, each on cache lines of its own.
     std::vector<TileRenderer> workers;

@@ -98,6 +98,14 @@ const std::vector<Setting>& render_settings_table() {
          "a time budget renders whole passes over the image, and whitted-mpi renders each tile's samples at once; "
          "use --timeout (or the batch system's limit)",
          kViewerRendersUntilStopped},
+        {"photons", "Photons",
+         "Path mode: photons per sample for caustics, the light of point, spot and directional lights through "
+         "glass and off mirrors (0 = none; used only in scenes with such lights and an ideal mirror or glass)",
+         &S::photons, 0, 1 << 24, {}, true},
+        {"photon-radius", "Photon radius",
+         "Path mode: the caustic photons' gather radius at the first sample, in scene units, shrinking as samples "
+         "add up (0 = the scene's bounding diagonal / 500)",
+         &S::photon_radius, 0, 1e30, {}, true},
         {"cs1230-stage", "CS1230 stage",
          "For Brown CSCI 1230 JSON scenes: draw them as the course's Intersect project (directional lights, no "
          "shadows, reflections or textures) or Illuminate (everything)",
@@ -186,7 +194,8 @@ RenderJob make_render_job(const RenderSettings& s) {
     job.width = s.width;
     job.height = s.height;
     job.integrator = {*parse_render_mode(s.mode), s.max_depth,
-                      cs1230::parse_stage(s.cs1230_stage).value_or(cs1230::Stage::Illuminate)};
+                      cs1230::parse_stage(s.cs1230_stage).value_or(cs1230::Stage::Illuminate), s.photons,
+                      s.photon_radius};
     job.sampling.aa = s.aa;
     job.sampling.spp = s.spp;
     job.sampling.aa_threshold = s.aa_threshold;

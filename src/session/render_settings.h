@@ -40,6 +40,8 @@ struct RenderSettings {
     double timeout = 0.0;     // seconds; 0 = none
     double time_limit = 0.0;  // seconds; 0 = none
     std::string cs1230_stage = "illuminate";  // which course project draws a CSCI 1230 file (§9.5)
+    int photons = 1 << 16;       // path mode's caustic photons per sample (0 = none)
+    float photon_radius = 0.0f;  // their first gather radius (0 = from the scene's size)
 
     std::set<std::string> given;
     bool is_given(std::string_view name) const { return given.count(std::string(name)) != 0; }
