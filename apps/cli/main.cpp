@@ -3,10 +3,9 @@
 // image cannot be written, out of memory), 4 --timeout ran out, 130 interrupted.
 #include <unistd.h>
 
-#include <csignal>
-
 #include <atomic>
 #include <chrono>
+#include <csignal>
 #include <iostream>
 #include <string>
 
