@@ -3,7 +3,9 @@
 // image cannot be written, out of memory), 4 --timeout ran out, 130 interrupted.
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <iostream>
 #include <string>
 
@@ -20,6 +22,7 @@
 #include "session/image_text.h"
 #include "session/run_limits.h"
 #include "session/session.h"
+#include "session_checkpoint.h"
 
 namespace {
 
@@ -60,7 +63,10 @@ int run(int argc, char** argv) {
                    "rays of its detailed sample, every bounce) to FILE: .obj (polylines, which Blender opens) or .json")
         ->type_name("FILE");
     app.add_flag("--json", inspect_outputs.json, "With --inspect: print the pixel's ray tree as JSON instead of the report");
-        if (int code = parse_render_options(app, o, argc, argv, "whitted", Frontend::Cli); code != kExitOk)
+    // Test-only (hidden): Ctrl-C as the Nth tile of the render finishes, at a known place.
+    int interrupt_after_tiles = 0;
+    app.add_option("--test-interrupt-after-tiles", interrupt_after_tiles)->group("");
+    if (int code = parse_render_options(app, o, argc, argv, "whitted", Frontend::Cli); code != kExitOk)
         return code < 0 ? 0 : code;
     const RenderSettings& s = o.settings;
     std::optional<PixelArg> pixel;
@@ -94,7 +100,8 @@ int run(int argc, char** argv) {
     auto limit_ran_out = [&]() -> const char* {
         return deadline.timed_out() ? "--timeout" : budget_deadline.timed_out() ? "--time-limit" : nullptr;
     };
-    LoadResult loaded = load_scene(o.scene_path, load_options(o, &interrupt_flag()));
+    std::uint64_t inputs = 0;
+    LoadResult loaded = load_scene_and_inputs(o, &interrupt_flag(), inputs);
     if (int code = report_load(loaded, o, "whitted", limit_ran_out()); code != kExitOk) return code;
 
     RenderJob job = render_job(o, &interrupt_flag());
@@ -113,8 +120,12 @@ int run(int argc, char** argv) {
         std::cerr << "whitted: note: " << hint << "\n";
 
     Session session(loaded.scene, job);
+    SessionCheckpoint checkpoint;
+    if (uses_checkpoint(s))
+        if (int code = checkpoint.start(o, loaded, inputs, session); code != kExitOk) return code;
     const int passes = int(session.pass_ends().size());
-    ProgressLine progress(job.tile_count() * passes, !o.quiet && isatty(STDERR_FILENO));
+    ProgressLine progress(job.tile_count() * passes - checkpoint.tiles_resumed(), !o.quiet && isatty(STDERR_FILENO));
+    std::atomic<int> tiles_finished{0};
     RenderStats last;
     bool budget_reached = false;
     while (!session.done()) {
@@ -124,9 +135,17 @@ int run(int argc, char** argv) {
             budget_reached = true;
             break;
         }
-        last = session.render_pass([&](const Tile&, const Film&) { progress.tile_done(); }).render;
+        last = session
+                   .render_pass([&](const Tile& t, const Film& film) {
+                       checkpoint.tile_done(t, film);
+                       progress.tile_done();
+                       if (++tiles_finished == interrupt_after_tiles) std::raise(SIGINT);
+                   })
+                   .render;
         if (last.cancelled) break;
+        checkpoint.pass_done(session);
     }
+    checkpoint.flush();
     progress.finish();
     const bool interrupted = last.cancelled && !budget_deadline.timed_out();
     // The budget ran out inside a pass: the last whole one stands, as if the forecast had said so.

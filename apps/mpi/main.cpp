@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "accel/scene.h"
-#include "checkpoint.h"
+#include "session/checkpoint.h"
 #include "interrupt.h"
 #include "load_report.h"
 #include "ranks.h"
@@ -27,8 +27,7 @@ using namespace whitted::mpi;
 
 struct MpiOptions {
     int tile_size = 32;
-    std::string checkpoint, resume;
-    double checkpoint_every = 5, grace = 0.5;
+    double grace = 0.5;
     std::uint64_t schedule_seed = 0;
     bool verify = false;
     TestKnobs knobs;
@@ -37,11 +36,6 @@ struct MpiOptions {
 void add_mpi_options(CLI::App& app, MpiOptions& m) {
     app.add_option("--tile-size", m.tile_size, "Tile size in pixels: the unit handed to ranks and checkpointed")
         ->check(CLI::Range(4, 1024));
-    app.add_option("--checkpoint", m.checkpoint,
-                   "Keep the finished tiles in FILE (flushed every --checkpoint-every seconds) for --resume");
-    app.add_option("--checkpoint-every", m.checkpoint_every, "Seconds between checkpoint flushes")
-        ->check(CLI::Range(0.0, 86400.0));
-    app.add_option("--resume", m.resume, "Render only the tiles a --checkpoint FILE of the same job does not hold");
     app.add_option("--interrupt-grace", m.grace,
                    "Seconds rank 0 waits for tiles in flight after Ctrl-C/SIGTERM before writing the partial image")
         ->check(CLI::Range(0.0, 60.0));
@@ -54,11 +48,6 @@ void add_mpi_options(CLI::App& app, MpiOptions& m) {
     app.add_option("--test-slow-ms", m.knobs.slow_ms)->group("");
     app.add_option("--test-slow-others-ms", m.knobs.others_ms)->group("");
     app.add_option("--test-corrupt-rank", m.knobs.corrupt_rank)->group("");
-}
-
-// Every setting that changes pixels (the one table's) and the tile grid: a checkpoint is for these only.
-std::string pixel_options(const RenderOptions& o, const MpiOptions& m) {
-    return pixel_key(o.settings) + "tile=" + std::to_string(m.tile_size) + ";";
 }
 
 int run(int argc, char** argv, int rank, int ranks) {
@@ -103,12 +92,13 @@ int run(int argc, char** argv, int rank, int ranks) {
     // A checkpoint is never written over what the job reads or writes (--checkpoint scene.sc
     // destroyed the scene): rank 0, which reads and writes them, decides for all.
     int refused = 0;
-    if (rank == 0 && !m.checkpoint.empty()) {
+    const std::string& checkpoint = o.settings.checkpoint;
+    if (rank == 0 && !checkpoint.empty()) {
         std::vector<std::string> inputs{o.scene_path};
         for (const auto* list : {&shared.loaded.texture_paths, &shared.loaded.mesh_paths})
             inputs.insert(inputs.end(), list->begin(), list->end());
         for (const std::string& t : o.settings.texture_dirs) inputs.push_back(t);
-        if (std::string problem = checkpoint_conflict(m.checkpoint, o.output, inputs); !problem.empty()) {
+        if (std::string problem = checkpoint_conflict(checkpoint, o.output, inputs); !problem.empty()) {
             std::cerr << "whitted-mpi: error: " << problem << "\n";
             refused = 1;
         }
@@ -131,12 +121,14 @@ int run(int argc, char** argv, int rank, int ranks) {
     if (rank != 0) return run_worker(s);
     s.options = &o;
     s.deadline = &deadline;
-    s.job_hash = fnv1a(pixel_options(o, m), shared.hash);
+    // Every setting that changes pixels (the one table's), the input bytes and the tile grid: a
+    // checkpoint is for these only.
+    s.checkpoint_key = {checkpoint_settings(o.settings, m.tile_size), shared.hash, s.grid};
     s.schedule_seed = m.schedule_seed;
     s.verify = m.verify;
-    s.checkpoint = m.checkpoint;
-    s.resume = m.resume;
-    s.checkpoint_seconds = m.checkpoint_every;
+    s.checkpoint = checkpoint;
+    s.resume = o.settings.resume;
+    s.checkpoint_seconds = o.settings.checkpoint_every;
     s.grace_seconds = m.grace;
     s.broadcast_bytes = shared.bytes;
     s.broadcast_seconds = shared.broadcast_seconds;

@@ -5,10 +5,10 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <thread>
 
-#include "checkpoint.h"
 #include "session/image_text.h"
 #include "session/session.h"
 #include "film/image_io.h"
@@ -101,7 +101,7 @@ struct Master {
         const int copy = schedule.arrive(t);
         if (copy == 1) film.copy_from(from, r);
         if (copy == schedule.copies()) {
-            checkpoint.append(t, film);
+            checkpoint.append(t, film, s.job.sampling.samples_per_pixel());
             progress.add(rank, 1, 0);
         }
         if (copy > 1 && !same_pixels(film, from, r) && mismatch.empty()) {
@@ -195,7 +195,8 @@ int Master::run() {
     if (!s.checkpoint.empty()) {
         std::vector<bool> done(std::size_t(s.grid.count()));
         for (int t = 0; t < s.grid.count(); ++t) done[std::size_t(t)] = schedule.is_done(t);
-        if (std::string err = checkpoint.open(s.checkpoint, {s.job_hash, s.grid}, film, done, s.checkpoint_seconds);
+        if (std::string err = checkpoint.open(s.checkpoint, s.checkpoint_key,
+                                              {{&film, done, s.job.sampling.samples_per_pixel()}}, s.checkpoint_seconds);
             !err.empty())
             std::cerr << "whitted-mpi: warning: " << err << " (rendering without one)\n";
     }
@@ -313,7 +314,8 @@ int run_master(const RankSetup& s) {
     Film film(s.grid.width, s.grid.height);
     std::vector<bool> done;
     if (!s.resume.empty()) {
-        if (std::string err = read_checkpoint(s.resume, {s.job_hash, s.grid}, film, done, s.interrupted); !err.empty()) {
+        if (std::string err = read_checkpoint(s.resume, s.checkpoint_key, s.job.sampling.samples_per_pixel(), film, done,
+                                              s.interrupted); !err.empty()) {
             std::cerr << "whitted-mpi: error: " << err << "\n";
             const std::int32_t c = cli::kExitUsage;
             // Workers are waiting for work: tell them the job is over.

@@ -7,6 +7,7 @@
 
 #include "interrupt.h"
 #include "render_options.h"
+#include "session/checkpoint.h"
 #include "tiles.h"
 
 namespace whitted::mpi {
@@ -25,7 +26,7 @@ struct RankSetup {
     // Rank 0 only:
     const cli::RenderOptions* options = nullptr;
     const cli::Deadline* deadline = nullptr;  // --timeout
-    std::uint64_t job_hash = 0;  // for the checkpoint
+    CheckpointKey checkpoint_key;
     std::uint64_t schedule_seed = 0;
     bool verify = false;  // every tile rendered by two ranks and compared
     std::string checkpoint, resume;

@@ -19,6 +19,10 @@ constexpr const char* kViewerRendersUntilStopped =
     "whitted-view renders passes over every pixel until you stop it (Esc); adaptive sampling and time limits "
     "are whitted's";
 
+constexpr const char* kViewerKeepsNoCheckpoint =
+    "whitted-view renders passes until you stop it and keeps no checkpoint; a long render to a file is "
+    "whitted's (whitted SCENE -o OUT --checkpoint FILE, then --resume FILE)";
+
 }  // namespace
 
 const std::vector<const char*>& render_mode_names() {
@@ -106,6 +110,18 @@ const std::vector<Setting>& render_settings_table() {
          "Path mode: the caustic photons' gather radius at the first sample, in scene units, shrinking as samples "
          "add up (0 = the scene's bounding diagonal / 500)",
          &S::photon_radius, 0, 1e30, {}, true},
+        // whitted-view renders passes until it is stopped and is started again in a moment: it
+        // keeps no checkpoint.
+        {"checkpoint", "Checkpoint",
+         "Keep the render so far in FILE (each tile as it is finished, each whole pass; flushed every "
+         "--checkpoint-every seconds) so that --resume FILE goes on after a crash, a reboot or a batch limit",
+         &S::checkpoint, 0, 0, {}, false, kViewer, "", kViewerKeepsNoCheckpoint},
+        {"checkpoint-every", "Checkpoint every", "Seconds between flushes of the --checkpoint file to the disk",
+         &S::checkpoint_every, 0, 86400, {}, false, kViewer, "", kViewerKeepsNoCheckpoint},
+        {"resume", "Resume",
+         "Go on from a --checkpoint FILE of the same job (scene, input files and every setting that changes "
+         "pixels): the image is the one an uninterrupted render writes",
+         &S::resume, 0, 0, {}, false, kViewer, "", kViewerKeepsNoCheckpoint},
         {"cs1230-stage", "CS1230 stage",
          "For Brown CSCI 1230 JSON scenes: draw them as the course's Intersect project (directional lights, no "
          "shadows, reflections or textures) or Illuminate (everything)",
@@ -157,6 +173,12 @@ std::string validate(RenderSettings& s) {
     }
     if (s.noise_threshold > 0.0f && s.spp * s.aa * s.aa < 2)
         return "--noise-threshold stops pixels between passes of samples: give --spp 2 or more (--spp 64, say)";
+    if (s.noise_threshold > 0.0f && !(s.checkpoint.empty() && s.resume.empty()))
+        return "--checkpoint and --resume do not keep adaptive sampling's state (which pixels have stopped, and "
+               "when): render without " +
+               std::string(s.is_given("noise-threshold") ? "--noise-threshold" : "--aa-threshold (with --spp > 1, the "
+                                                                                  "noise threshold)") +
+               ", or without a checkpoint";
     if (s.untrusted && (s.width > UntrustedLimits::kImageSide || s.height > UntrustedLimits::kImageSide))
         return "--untrusted renders images of at most " + std::to_string(UntrustedLimits::kImageSide) + "x" +
                std::to_string(UntrustedLimits::kImageSide) + " pixels (" + std::to_string(s.width) + "x" +

@@ -39,6 +39,9 @@ struct RenderSettings {
     std::string max_memory;  // "512M", "4G"; "" = the default
     double timeout = 0.0;     // seconds; 0 = none
     double time_limit = 0.0;  // seconds; 0 = none
+    std::string checkpoint;         // "" = none
+    double checkpoint_every = 5.0;  // seconds between flushes of the checkpoint
+    std::string resume;             // "" = none
     std::string cs1230_stage = "illuminate";  // which course project draws a CSCI 1230 file (§9.5)
     int photons = 1 << 16;       // path mode's caustic photons per sample (0 = none)
     float photon_radius = 0.0f;  // their first gather radius (0 = from the scene's size)

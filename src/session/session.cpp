@@ -46,8 +46,21 @@ PassStats Session::render_pass(const std::function<void(const Tile&, const Film&
     job.sample_begin = pass.samples_begin;
     job.sample_end = pass.samples_end;
     job.active = active_.empty() ? nullptr : &active_;
-    pass.pixels = active_.empty() ? std::size_t(job.render_region().width()) * std::size_t(job.render_region().height())
-                                  : std::size_t(std::count(active_.begin(), active_.end(), std::uint8_t(1)));
+    // After a resume, the tiles of this pass not done yet.
+    std::vector<Tile> resumed_rest;
+    int resumed = 0;
+    for (std::size_t i = 0; i < resumed_.size(); ++i) {
+        if (resumed_[i])
+            ++resumed;
+        else
+            resumed_rest.push_back(tiles_[i]);
+    }
+    const std::vector<Tile>& tiles = resumed_.empty() ? tiles_ : resumed_rest;
+    pass.pixels = 0;
+    if (active_.empty())
+        for (const Tile& t : tiles) pass.pixels += std::size_t(t.width()) * std::size_t(t.height());
+    else
+        pass.pixels = std::size_t(std::count(active_.begin(), active_.end(), std::uint8_t(1)));
     // The first pass renders into the film shown (there is nothing to keep); each later one continues
     // every tile from the last whole pass into the other film, which becomes the one shown once the
     // pass is complete.
@@ -56,18 +69,38 @@ PassStats Session::render_pass(const std::function<void(const Tile&, const Film&
     job.on_tile = [&](const Tile& t) {
         if (on_tile) on_tile(t, target);
     };
-    pass.render = render_tiles_into(*integrator_, job, tiles_, [&](const Tile& t) -> Film& {
+    pass.render = render_tiles_into(*integrator_, job, tiles, [&](const Tile& t) -> Film& {
         if (!first) target.copy_from(*shown_, t);
         return target;
     });
+    pass.render.tiles_done += resumed;
+    pass.render.tiles_total = int(tiles_.size());
     rays_ += pass.render.rays;
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (pass.render.cancelled) return pass;
+    resumed_.clear();
     shown_ = &target;
     ++passes_done_;
     if (!active_.empty()) update_convergence();
     last_ = pass;
     return pass;
+}
+
+void Session::resume(int passes, const Film& whole, const Film& next, const std::vector<bool>& next_done) {
+    passes_done_ = std::clamp(passes, 0, int(passes_.size()));
+    shown_ = &films_[0];
+    if (passes_done_ > 0)
+        for (const Tile& t : tiles_) films_[0].copy_from(whole, t);
+    resumed_.clear();
+    if (done()) return;
+    // The pass under way renders into the film shown when it is the first, else into the other.
+    Film& target = passes_done_ == 0 ? films_[0] : films_[1];
+    resumed_.assign(tiles_.size(), false);
+    for (std::size_t i = 0; i < tiles_.size() && i < next_done.size(); ++i)
+        if (next_done[i]) {
+            target.copy_from(next, tiles_[i]);
+            resumed_[i] = true;
+        }
 }
 
 double Session::forecast_next_pass_seconds() const {

@@ -78,6 +78,14 @@ public:
     // the tiles finished). Returns the pass's statistics.
     PassStats render_pass(const std::function<void(const Tile&, const Film&)>& on_tile = {});
 
+    // Continues a render stopped part-way (a checkpoint, session/checkpoint.h): `whole` (the whole
+    // image) holds the first `passes` passes, and `next` the pass after them in the tiles that
+    // `next_done` marks (indices into tiles()), which the next render_pass does not render again.
+    // Not with a noise threshold (which pixels have stopped is not given).
+    void resume(int passes, const Film& whole, const Film& next, const std::vector<bool>& next_done);
+    // The tiles each pass renders, in order.
+    const std::vector<Tile>& tiles() const { return tiles_; }
+
     // The time the next pass is expected to take, from the passes so far (0 before the first):
     // the last pass's time scaled by its samples and pixels (a time budget's forecast).
     double forecast_next_pass_seconds() const;
@@ -105,6 +113,7 @@ private:
     std::vector<int> passes_;
     int passes_done_ = 0;
     std::vector<Tile> tiles_;
+    std::vector<bool> resumed_;  // tiles of the next pass already done (resume)
     Film films_[2];
     Film* shown_ = &films_[0];  // the last whole pass
     std::vector<std::uint8_t> active_;  // adaptive: 1 = the pixel takes the next pass's samples
