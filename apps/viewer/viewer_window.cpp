@@ -178,6 +178,7 @@ void ViewerWindow::render(bool force_reload) {
     camera_.apply(s);  // the view the user moved to stays
     if (!controller_.start(scene_, load_options(), s, force_reload)) {
         set_message("the image is up to date: nothing changed (File > Reload reads the scene again)");
+        report_->changed();
         return;
     }
     report_->job_started(controller_.status().job);

@@ -215,9 +215,11 @@ RenderJob make_render_job(const RenderSettings& s) {
     RenderJob job;
     job.width = s.width;
     job.height = s.height;
-    job.integrator = {*parse_render_mode(s.mode), s.max_depth,
-                      cs1230::parse_stage(s.cs1230_stage).value_or(cs1230::Stage::Illuminate), s.photons,
-                      s.photon_radius};
+    job.integrator.mode = *parse_render_mode(s.mode);
+    job.integrator.max_depth = s.max_depth;
+    job.integrator.cs1230_stage = cs1230::parse_stage(s.cs1230_stage).value_or(cs1230::Stage::Illuminate);
+    job.integrator.photons = s.photons;
+    job.integrator.photon_radius = s.photon_radius;
     job.sampling.aa = s.aa;
     job.sampling.spp = s.spp;
     job.sampling.aa_threshold = s.aa_threshold;

@@ -93,6 +93,25 @@ TEST_F(ViewerWorkbench, SaveCameraIntoSceneKeepsEveryOtherByteAndTheImageOnScree
     EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
 }
 
+// F5 with nothing changed renders nothing: the picture stays, no new job, and the status bar says why.
+TEST_F(ViewerWorkbench, RenderAgainWithNothingChangedKeepsThePicture) {
+    auto viewer = start_viewer({});
+    Ready first;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, first, [](const Ready& n) { return n.state == "finished"; }))
+        << viewer->output();
+    keys("F5");
+    Ready again;
+    ASSERT_TRUE(wait_for_ready(*viewer, ready_, again, [](const Ready& n) {
+        const auto m = n.labels.find("message");
+        return m != n.labels.end() && m->second.find("up to date") != std::string::npos;
+    }, 20s)) << viewer->output();
+    EXPECT_EQ(again.job, first.job);
+    EXPECT_EQ(again.state, "finished");
+    EXPECT_TRUE(shows(grab_screen(x_.display(), dir_ + "/again.png"), red_, again.image));
+    viewer->signal(SIGTERM);
+    EXPECT_EQ(viewer->wait_exit(10s), 0) << viewer->output();
+}
+
 TEST_F(ViewerWorkbench, ABrokenSceneKeepsTheLastImageDimmedUnderTheErrorUntilFixed) {
     auto viewer = start_viewer({"--watch"});
     Ready first;
