@@ -37,6 +37,8 @@ struct RenderSettings {
     double timeout = 0.0;     // seconds; 0 = none
     double time_limit = 0.0;  // seconds; 0 = none
     std::string cs1230_stage = "illuminate";  // which course project draws a CSCI 1230 file (§9.5)
+    std::string aov;       // per-term images to write beside the image (render/aov.h); "" = none
+    std::string aov_file;  // where: an .exr for one multi-layer file, else NAME.LAYER.png beside it
 
     std::set<std::string> given;
     bool is_given(std::string_view name) const { return given.count(std::string(name)) != 0; }

@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 #include "accel/scene.h"
 #include "base/parallel_for.h"
 #include "integrator/integrator.h"
+#include "render/aov_renderer.h"
 
 namespace whitted {
 
@@ -27,6 +29,14 @@ Session::Session(std::shared_ptr<const Scene> scene, const RenderJob& job)
     const PixelRegion region = job_.render_region();
     films_[0].reset(job_.width, job_.height, region);
     if (passes_.size() > 1) films_[1].reset(job_.width, job_.height, region);
+    if (!job_.aovs.empty()) {
+        if (const std::string problem = aov_problem(*scene_, job_); !problem.empty())
+            throw std::invalid_argument(problem);
+        aov_plan_ = std::make_unique<AovPlan>();
+        AovPlan::make(job_.aovs, job_.integrator.mode, scene_->data.lights.size(), *aov_plan_);
+        aov_films_[0].reset(job_.width, job_.height, region, aov_plan_->channels());
+        if (passes_.size() > 1) aov_films_[1].reset(job_.width, job_.height, region, aov_plan_->channels());
+    }
     if (job_.sampling.noise_threshold > 0.0f && passes_.size() > 1) {
         const std::size_t pixels = std::size_t(region.width()) * std::size_t(region.height());
         active_.assign(pixels, 1);
@@ -56,10 +66,21 @@ PassStats Session::render_pass(const std::function<void(const Tile&, const Film&
     job.on_tile = [&](const Tile& t) {
         if (on_tile) on_tile(t, target);
     };
-    pass.render = render_tiles_into(*integrator_, job, tiles_, [&](const Tile& t) -> Film& {
+    auto film_for = [&](const Tile& t) -> Film& {
         if (!first) target.copy_from(*shown_, t);
         return target;
-    });
+    };
+    if (aov_plan_) {
+        // The layers follow the image: the same tiles continued from the same pass.
+        const std::size_t shown = shown_ == &films_[0] ? 0 : 1, into = &target == &films_[0] ? 0 : 1;
+        pass.render = render_tiles_with_aovs(*integrator_, job, *aov_plan_, tiles_, film_for,
+                                             [&](const Tile& t) -> ChannelFilm& {
+                                                 if (!first) aov_films_[into].copy_from(aov_films_[shown], t);
+                                                 return aov_films_[into];
+                                             });
+    } else {
+        pass.render = render_tiles_into(*integrator_, job, tiles_, film_for);
+    }
     rays_ += pass.render.rays;
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (pass.render.cancelled) return pass;
@@ -142,6 +163,18 @@ bool Session::render_preview(int divisor, Image& out) const {
     if (render(*integrator_, small, film).cancelled) return false;
     out = enlarge_nearest(film.to_image(), job_.width, job_.height);
     return true;
+}
+
+std::string aov_problem(const Scene& scene, const RenderJob& job) {
+    if (job.aovs.empty()) return "";
+    if (job.sampling.adaptive())
+        return "--aov with adaptive anti-aliasing (--aa-threshold) is not supported yet: its pixels' centres are "
+               "rendered apart from their samples";
+    AovPlan plan;
+    if (std::string problem = AovPlan::make(job.aovs, job.integrator.mode, scene.data.lights.size(), plan);
+        !problem.empty())
+        return problem;
+    return aov_refusal(*make_integrator(scene, job.camera_for(scene), job.integrator));
 }
 
 Image enlarge_nearest(const Image& small, int width, int height) {
