@@ -102,7 +102,8 @@ int run(int argc, char** argv) {
     if (int code = report_load(loaded, o, "whitted", limit_ran_out()); code != kExitOk) return code;
 
     RenderJob job = render_job(o, &interrupt_flag());
-    if (const std::string problem = pixel ? "" : aov_problem(*loaded.scene, job); !problem.empty()) {
+    const std::size_t left = memory_limit(s) - std::min(memory_limit(s), o.for_image);
+    if (const std::string problem = pixel ? "" : aov_problem(*loaded.scene, job, left); !problem.empty()) {
         std::cerr << "whitted: error: --aov: " << problem << "\n";
         return kExitUsage;
     }

@@ -8,6 +8,7 @@
 
 #include "accel/scene.h"
 #include "base/parallel_for.h"
+#include "base/read_file.h"
 #include "integrator/integrator.h"
 #include "render/aov_renderer.h"
 
@@ -165,7 +166,7 @@ bool Session::render_preview(int divisor, Image& out) const {
     return true;
 }
 
-std::string aov_problem(const Scene& scene, const RenderJob& job) {
+std::string aov_problem(const Scene& scene, const RenderJob& job, std::size_t max_bytes) {
     if (job.aovs.empty()) return "";
     if (job.sampling.adaptive())
         return "--aov with adaptive anti-aliasing (--aa-threshold) is not supported yet: its pixels' centres are "
@@ -174,6 +175,12 @@ std::string aov_problem(const Scene& scene, const RenderJob& job) {
     if (std::string problem = AovPlan::make(job.aovs, job.integrator.mode, scene.data.lights.size(), plan);
         !problem.empty())
         return problem;
+    const PixelRegion r = job.render_region();
+    const std::size_t bytes =
+        3 * sizeof(float) * std::size_t(plan.channels()) * std::size_t(r.width()) * std::size_t(r.height());
+    if (bytes > max_bytes)
+        return "the " + std::to_string(plan.layers().size()) + " layers need about " + describe_bytes(bytes) +
+               " of memory, more than the " + describe_bytes(max_bytes) + " left besides the image (--max-memory)";
     return aov_refusal(*make_integrator(scene, job.camera_for(scene), job.integrator));
 }
 

@@ -17,6 +17,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <memory>
 #include <vector>
 
@@ -124,8 +125,9 @@ private:
 };
 
 // Why `job` cannot render its per-term images of `scene` ("" = it can, or asks for none): a layer
-// the scene has no light for, the course's lighting model, adaptive anti-aliasing.
-std::string aov_problem(const Scene& scene, const RenderJob& job);
+// the scene has no light for, the course's lighting model, adaptive anti-aliasing, or more memory
+// than `max_bytes` for their floats (two films of them while passes render, and the layers written).
+std::string aov_problem(const Scene& scene, const RenderJob& job, std::size_t max_bytes = SIZE_MAX);
 
 // The nearest-neighbour enlargement of `small` to width × height (a coarse frame shown full size).
 Image enlarge_nearest(const Image& small, int width, int height);

@@ -152,6 +152,8 @@ TEST(CliAov, RefusesWhatItCannotWrite) {
     refused({"--aov", "depth", "--mode", "raycast"}, "whitted and path modes");
     refused({"--aov-file", dir + "/l.exr"}, "give --aov too");
     refused({"--aov", "depth", "--aa", "3", "--aa-threshold", "0.1"}, "adaptive anti-aliasing");
+    // 200 x 150 pixels of 14 floats (4 of every pixel, 3 + 3 + 3 + 1 of the layers), three times: 5 MB.
+    refused({"--aov", "ambient,shadow.L1,normal,depth", "--max-memory", "1M"}, "layers need about");
 }
 
 }  // namespace
