@@ -19,6 +19,7 @@
 #include "progress.h"
 #include "render/load_scene.h"
 #include "render_options.h"
+#include "session/aov_output.h"
 #include "session/image_text.h"
 #include "session/run_limits.h"
 #include "session/session.h"
@@ -87,6 +88,10 @@ int run(int argc, char** argv) {
         return problem.rfind("--ray-tree", 0) == 0 ? kExitUsage : kExitIo;
     }
     // A missing folder or a read-only one is found now, not after a long render (as POV-Ray does).
+    if (std::string problem = pixel || s.aov_file.empty() ? "" : output_unwritable(s.aov_file); !problem.empty()) {
+        std::cerr << "whitted: error: " << problem << "\n";
+        return kExitIo;
+    }
     if (std::string problem = pixel ? "" : output_unwritable(o.output); !problem.empty()) {
         std::cerr << "whitted: error: " << problem << "\n";
         return kExitIo;
@@ -105,6 +110,11 @@ int run(int argc, char** argv) {
     if (int code = report_load(loaded, o, "whitted", limit_ran_out()); code != kExitOk) return code;
 
     RenderJob job = render_job(o, &interrupt_flag());
+    const std::size_t left = memory_limit(s) - std::min(memory_limit(s), o.for_image);
+    if (const std::string problem = pixel ? "" : aov_problem(*loaded.scene, job, left); !problem.empty()) {
+        std::cerr << "whitted: error: --aov: " << problem << "\n";
+        return kExitUsage;
+    }
     if (pixel) {
         const int code = print_inspection(*loaded.scene, job, *pixel, o.scene_path, inspect_outputs);
         if (code != kExitInterrupted) return code;
@@ -174,7 +184,10 @@ int run(int argc, char** argv) {
     // .exr and .pfm keep the linear values; the 8-bit formats get them through the view transform
     // (linear: clamped, §7).
     std::string err;
-    if (is_linear_output(written)) {
+    if (!s.aov.empty()) {  // the image and its per-term images (session/aov_output.h)
+        const std::string aov_file = complete || s.aov_file.empty() ? s.aov_file : partial_image_path(s.aov_file);
+        err = write_image_with_aovs(session, written, aov_file, image_text(session, o));
+    } else if (is_linear_output(written)) {
         LinearImage image = session.film().to_linear();
         image.text = image_text(session, o);
         err = write_linear_image(image, written);

@@ -39,12 +39,14 @@ private:
 
 }  // namespace
 
-bool encode_exr(const LinearImage& image, std::FILE* file, int& error) {
+bool encode_exr(const LinearImage& image, std::FILE* file, int& error, const std::vector<ImageLayer>& layers) {
     error = 0;
     try {
         FileStream stream(file, error);
         Imf::Header header(image.width, image.height);
         for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
+        for (const ImageLayer& layer : layers)
+            for (const std::string& c : layer.channels) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
         for (const auto& [key, value] : image.text) header.insert(key, Imf::StringAttribute(value));
         Imf::OutputFile out(stream, header);
         Imf::FrameBuffer fb;
@@ -53,6 +55,13 @@ bool encode_exr(const LinearImage& image, std::FILE* file, int& error) {
         fb.insert("R", Imf::Slice(Imf::FLOAT, base, px, row));
         fb.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), px, row));
         fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), px, row));
+        for (const ImageLayer& layer : layers) {
+            char* values = const_cast<char*>(reinterpret_cast<const char*>(layer.values.data()));
+            const std::size_t stride = sizeof(float) * layer.channels.size();
+            for (std::size_t c = 0; c < layer.channels.size(); ++c)
+                fb.insert(layer.channels[c], Imf::Slice(Imf::FLOAT, values + c * sizeof(float), stride,
+                                                        stride * std::size_t(image.width)));
+        }
         out.setFrameBuffer(fb);
         out.writePixels(image.height);
         return true;

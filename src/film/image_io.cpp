@@ -204,10 +204,16 @@ std::string write_image(const Image& image, const std::string& path) {
     return write_atomically(path, [&](FileSink& sink) { return encode(image, ext, sink); });
 }
 
-std::string write_linear_image(const LinearImage& image, const std::string& path) {
+std::string write_linear_image(const LinearImage& image, const std::string& path,
+                               const std::vector<ImageLayer>& layers) {
     if (std::string problem = output_problem(image.width, image.height, path); !problem.empty()) return problem;
     if (image.rgb.size() != std::size_t(image.width) * std::size_t(image.height))
         return "cannot write '" + path + "': the image's pixels do not match its size";
+    for (const ImageLayer& layer : layers)
+        if (layer.values.size() != image.rgb.size() * layer.channels.size())
+            return "cannot write '" + path + "': a layer's pixels do not match the image's size";
+    if (!layers.empty() && extension_of(path) != ".exr")
+        return "cannot write '" + path + "': only OpenEXR (.exr) files hold layers";
     if (!is_linear_output(path)) {
         Image bytes(image.width, image.height);
         bytes.text = image.text;
@@ -220,7 +226,7 @@ std::string write_linear_image(const LinearImage& image, const std::string& path
         if (!exr) return encode_pfm(image, sink);
         // A full disk says "No space left on device", not "the image could not be encoded".
         int error = 0;
-        if (!encode_exr(image, sink.file, error)) {
+        if (!encode_exr(image, sink.file, error, layers)) {
             sink.ok = false;
             sink.error = error;
         } else if (std::fflush(sink.file) != 0) {

@@ -3,7 +3,10 @@
 #include <cstdint>
 #include <string>
 
+#include <vector>
+
 #include "film/image.h"
+#include "film/image_layer.h"
 
 namespace whitted {
 
@@ -38,7 +41,9 @@ bool is_linear_output(const std::string& path);
 
 // Writes OpenEXR (float RGB) or PFM by the extension, atomically as write_image does. The 8-bit
 // formats get the image clamped and converted as §7 says. Returns "" or an error message.
-std::string write_linear_image(const LinearImage& image, const std::string& path);
+// `layers`: more channels an .exr keeps beside R, G, B (film/image_layer.h; other formats refuse them).
+std::string write_linear_image(const LinearImage& image, const std::string& path,
+                               const std::vector<ImageLayer>& layers = {});
 
 // Reads any format stb_image reads into 8-bit RGB. Returns "" or an error message.
 std::string read_image(const std::string& path, Image& out);

@@ -99,7 +99,7 @@ glm::vec3 PathIntegrator::next_event(const Vertex& v, int bounce, const SampleKe
 }
 
 glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, const Sampler& sampler,
-                                   RayCounts& counts, const Hit* first, bool first_known) const {
+                                   RayCounts& counts, const Hit* first, bool first_known, glm::vec3* direct) const {
     ++counts.camera;
     glm::vec3 radiance(0.0f), beta(1.0f);
     Ray ray = camera_ray;
@@ -133,6 +133,10 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
                 radiance += beta * m.emit * power_heuristic(bsdf_pdf, pdf_light);
             }
         }
+        if (bounce == 1 && direct) {  // what the first bounce found, before the second vertex's own light
+            *direct = radiance;
+            direct = nullptr;
+        }
         if (bounce >= max_bounces_) break;
 
         const Vertex v{s, Bsdf(m, s.diffuse, s.normal, wo), wo};
@@ -159,6 +163,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
             }
         }
     }
+    if (direct) *direct = radiance;  // the path ended before its second vertex's light: all of it is direct
     return radiance;
 }
 

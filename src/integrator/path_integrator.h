@@ -21,9 +21,12 @@ public:
                   RayCounts& counts) const override;
     bool clamps_samples() const override { return false; }  // radiance, averaged as it is
 
-    // One camera ray on its own (nullptr first: find its first hit here).
+    // One camera ray on its own (nullptr first: find its first hit here). With `direct`, also the
+    // part of the colour that reached the camera in at most one bounce: emitters and the background
+    // seen, and light reaching the first surface (its next-event estimate and the emitter or
+    // background its sampled ray finds); the rest is indirect.
     glm::vec3 radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler, RayCounts& counts,
-                       const Hit* first = nullptr, bool first_known = false) const;
+                       const Hit* first = nullptr, bool first_known = false, glm::vec3* direct = nullptr) const;
 
 private:
     struct Vertex;

@@ -44,6 +44,12 @@ glm::vec3 WhittedIntegrator::radiance(const Ray& ray, const SampleKey& key, cons
     return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, recorder);
 }
 
+glm::vec3 WhittedIntegrator::radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler, RayCounts& counts,
+                                      AovRecorder& recorder) const {
+    ++counts.camera;
+    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, recorder);
+}
+
 // Whether the shadow query may start at the light. A hit found along a ray is off by about 1e-7
 // of its distance from the ray's origin; from a light far away (relative to the scene around the
 // point) that error would swallow the offset that keeps the point's own surface out of the query,

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "integrator/aov_recorder.h"
 #include "integrator/conventions.h"
 #include "integrator/integrator.h"
 #include "integrator/light_sample.h"
@@ -37,6 +38,9 @@ public:
     // which the renderer runs with a recorder that does nothing.
     glm::vec3 radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler, RayCounts& counts,
                        ShadingRecorder& recorder) const;
+    // The same, recording the sample's per-term images (integrator/aov_recorder.h).
+    glm::vec3 radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler, RayCounts& counts,
+                       AovRecorder& recorder) const;
 
 private:
     // A hit made ready for shading: its surface, the normal facing the viewer, the points just

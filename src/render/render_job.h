@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "camera/camera.h"
@@ -51,6 +52,9 @@ struct RenderJob {
     int sample_begin = 0, sample_end = -1;
     // The pixels of the render region (row by row) to take samples, 1 each; null = all of them.
     const std::vector<std::uint8_t>* active = nullptr;
+    // The per-term images to render beside the image (render/aov.h; a render session makes them):
+    // names as --aov lists them; empty = none.
+    std::vector<std::string> aovs;
     int threads = 0;  // 0 = all hardware threads
     int tile_size = 32;
     // Set by another thread (or a signal handler) to stop; checked at least once per tile row.

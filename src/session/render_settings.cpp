@@ -6,6 +6,7 @@
 
 #include "cs1230/stage.h"
 #include "integrator/render_mode.h"
+#include "render/aov.h"
 #include "session/run_limits.h"
 
 namespace whitted {
@@ -126,6 +127,20 @@ const std::vector<Setting>& render_settings_table() {
          "For Brown CSCI 1230 JSON scenes: draw them as the course's Intersect project (directional lights, no "
          "shadows, reflections or textures) or Illuminate (everything)",
          &S::cs1230_stage, 0, 0, {"illuminate", "intersect"}, true},
+        {"aov", "Per-term images",
+         "Also write these layers of the render (comma-separated): whitted mode ambient, diffuse, specular, reflect, "
+         "transmit, emit, background (they add up to the image before clamping), diffuse.Lk, specular.Lk, shadow.Lk "
+         "(light k), normal, depth, albedo, object, samples; path mode direct, indirect, albedo, normal, depth, "
+         "object, samples; 'all' for every one. Into the .exr output, else NAME.LAYER.png (see --aov-file)",
+         &S::aov, 0, 0, {}, false, kMpi | kViewer,
+         "whitted-mpi does not gather per-term images from its ranks yet; render them with whitted",
+         "whitted-view shows the image only; write per-term images with whitted --aov"},
+        {"aov-file", "Per-term image file",
+         "Where --aov's layers go: FILE.exr for one multi-layer OpenEXR file (the image and its layers), any other "
+         "name for one PNG per layer beside it (FILE.LAYER.png); default: the output",
+         &S::aov_file, 0, 0, {}, false, kMpi | kViewer,
+         "whitted-mpi does not gather per-term images from its ranks yet; render them with whitted",
+         "whitted-view shows the image only; write per-term images with whitted --aov"},
     };
     return table;
 }
@@ -179,6 +194,19 @@ std::string validate(RenderSettings& s) {
                std::string(s.is_given("noise-threshold") ? "--noise-threshold" : "--aa-threshold (with --spp > 1, the "
                                                                                   "noise threshold)") +
                ", or without a checkpoint";
+    if (!s.aov_file.empty() && s.aov.empty()) return "--aov-file names where --aov's layers go: give --aov too";
+    if (!s.aov.empty()) {
+        const std::vector<std::string> names = split_aov_list(s.aov);
+        if (names.empty()) return "--aov needs the names of layers (diffuse,specular,depth,... or all)";
+        if (std::string problem = check_aov_names(names, *parse_render_mode(s.mode)); !problem.empty())
+            return "--aov: " + problem;
+        if (s.aa_threshold > 0.0f && s.aa > 1 && s.spp == 1)
+            return "--aov with adaptive anti-aliasing (--aa-threshold) is not supported yet: use --aa N alone, or "
+                   "--spp with --noise-threshold";
+    }
+    if (!s.aov.empty() && !s.resume.empty())
+        return "--resume does not keep --aov's layers (the checkpoint holds the image's samples only): render "
+               "the layers without a checkpoint";
     if (s.untrusted && (s.width > UntrustedLimits::kImageSide || s.height > UntrustedLimits::kImageSide))
         return "--untrusted renders images of at most " + std::to_string(UntrustedLimits::kImageSide) + "x" +
                std::to_string(UntrustedLimits::kImageSide) + " pixels (" + std::to_string(s.width) + "x" +
@@ -227,6 +255,7 @@ RenderJob make_render_job(const RenderSettings& s) {
     job.sampling.min_spp = s.min_spp;
     job.sampling.seed = std::uint32_t(s.seed);
     job.threads = s.threads;
+    job.aovs = split_aov_list(s.aov);
     return job;
 }
 

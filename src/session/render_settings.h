@@ -45,6 +45,8 @@ struct RenderSettings {
     std::string cs1230_stage = "illuminate";  // which course project draws a CSCI 1230 file (§9.5)
     int photons = 1 << 16;       // path mode's caustic photons per sample (0 = none)
     float photon_radius = 0.0f;  // their first gather radius (0 = from the scene's size)
+    std::string aov;       // per-term images to write beside the image (render/aov.h); "" = none
+    std::string aov_file;  // where: an .exr for one multi-layer file, else NAME.LAYER.png beside it
 
     std::set<std::string> given;
     bool is_given(std::string_view name) const { return given.count(std::string(name)) != 0; }

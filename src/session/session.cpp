@@ -4,10 +4,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 #include "accel/scene.h"
 #include "base/parallel_for.h"
+#include "base/read_file.h"
 #include "integrator/integrator.h"
+#include "render/aov_renderer.h"
 
 namespace whitted {
 
@@ -27,6 +30,14 @@ Session::Session(std::shared_ptr<const Scene> scene, const RenderJob& job)
     const PixelRegion region = job_.render_region();
     films_[0].reset(job_.width, job_.height, region);
     if (passes_.size() > 1) films_[1].reset(job_.width, job_.height, region);
+    if (!job_.aovs.empty()) {
+        if (const std::string problem = aov_problem(*scene_, job_); !problem.empty())
+            throw std::invalid_argument(problem);
+        aov_plan_ = std::make_unique<AovPlan>();
+        AovPlan::make(job_.aovs, job_.integrator.mode, scene_->data.lights.size(), *aov_plan_);
+        aov_films_[0].reset(job_.width, job_.height, region, aov_plan_->channels());
+        if (passes_.size() > 1) aov_films_[1].reset(job_.width, job_.height, region, aov_plan_->channels());
+    }
     if (job_.sampling.noise_threshold > 0.0f && passes_.size() > 1) {
         const std::size_t pixels = std::size_t(region.width()) * std::size_t(region.height());
         active_.assign(pixels, 1);
@@ -69,10 +80,21 @@ PassStats Session::render_pass(const std::function<void(const Tile&, const Film&
     job.on_tile = [&](const Tile& t) {
         if (on_tile) on_tile(t, target);
     };
-    pass.render = render_tiles_into(*integrator_, job, tiles, [&](const Tile& t) -> Film& {
+    auto film_for = [&](const Tile& t) -> Film& {
         if (!first) target.copy_from(*shown_, t);
         return target;
-    });
+    };
+    if (aov_plan_) {
+        // The layers follow the image: the same tiles continued from the same pass.
+        const std::size_t shown = shown_ == &films_[0] ? 0 : 1, into = &target == &films_[0] ? 0 : 1;
+        pass.render = render_tiles_with_aovs(*integrator_, job, *aov_plan_, tiles, film_for,
+                                             [&](const Tile& t) -> ChannelFilm& {
+                                                 if (!first) aov_films_[into].copy_from(aov_films_[shown], t);
+                                                 return aov_films_[into];
+                                             });
+    } else {
+        pass.render = render_tiles_into(*integrator_, job, tiles, film_for);
+    }
     pass.render.tiles_done += resumed;
     pass.render.tiles_total = int(tiles_.size());
     rays_ += pass.render.rays;
@@ -187,6 +209,24 @@ LinearImage enlarge_nearest(const LinearImage& small, int width, int height) {
                 small.rgb[std::size_t(sy) * std::size_t(small.width) + std::size_t(std::int64_t(x) * small.width / width)];
     }
     return big;
+}
+
+std::string aov_problem(const Scene& scene, const RenderJob& job, std::size_t max_bytes) {
+    if (job.aovs.empty()) return "";
+    if (job.sampling.adaptive())
+        return "--aov with adaptive anti-aliasing (--aa-threshold) is not supported yet: its pixels' centres are "
+               "rendered apart from their samples";
+    AovPlan plan;
+    if (std::string problem = AovPlan::make(job.aovs, job.integrator.mode, scene.data.lights.size(), plan);
+        !problem.empty())
+        return problem;
+    const PixelRegion r = job.render_region();
+    const std::size_t bytes =
+        3 * sizeof(float) * std::size_t(plan.channels()) * std::size_t(r.width()) * std::size_t(r.height());
+    if (bytes > max_bytes)
+        return "the " + std::to_string(plan.layers().size()) + " layers need about " + describe_bytes(bytes) +
+               " of memory, more than the " + describe_bytes(max_bytes) + " left besides the image (--max-memory)";
+    return aov_refusal(*make_integrator(scene, job.camera_for(scene), job.integrator));
 }
 
 Image enlarge_nearest(const Image& small, int width, int height) {

@@ -17,10 +17,13 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <memory>
 #include <vector>
 
+#include "film/channel_film.h"
 #include "film/film.h"
+#include "render/aov.h"
 #include "render/render_job.h"
 #include "render/renderer.h"
 
@@ -57,6 +60,8 @@ public:
     // Renders `scene` as `job` says: its size, region, camera, integrator, sampling, threads, tile
     // size and cancel flag (job.sample_begin and sample_end are the session's to set).
     Session(std::shared_ptr<const Scene> scene, const RenderJob& job);
+    // With job.aovs, the per-term images too (render/aov.h), over the same samples as the image;
+    // the job must have passed aov_problem (a std::invalid_argument otherwise).
     ~Session();
     Session(const Session&) = delete;
     Session& operator=(const Session&) = delete;
@@ -92,6 +97,9 @@ public:
 
     // The image so far: the last whole pass (or the first pass's finished tiles).
     const Film& film() const { return *shown_; }
+    // The per-term images (null without job.aovs) and their floats for the image film() holds.
+    const AovPlan* aov_plan() const { return aov_plan_.get(); }
+    const ChannelFilm& aov_film() const { return aov_films_[shown_ == &films_[0] ? 0 : 1]; }
     // Samples each pixel of the job's region took (adaptive sampling; else every pixel the same).
     std::vector<int> samples_per_pixel() const;
 
@@ -116,12 +124,19 @@ private:
     std::vector<bool> resumed_;  // tiles of the next pass already done (resume)
     Film films_[2];
     Film* shown_ = &films_[0];  // the last whole pass
+    std::unique_ptr<AovPlan> aov_plan_;
+    ChannelFilm aov_films_[2];  // beside films_[0] and films_[1]
     std::vector<std::uint8_t> active_;  // adaptive: 1 = the pixel takes the next pass's samples
     std::vector<std::uint16_t> converged_at_;  // adaptive: the pass count at which the pixel stopped (0 = never)
     PassStats last_;
     RayCounts rays_;
     double seconds_ = 0;
 };
+
+// Why `job` cannot render its per-term images of `scene` ("" = it can, or asks for none): a layer
+// the scene has no light for, the course's lighting model, adaptive anti-aliasing, or more memory
+// than `max_bytes` for their floats (two films of them while passes render, and the layers written).
+std::string aov_problem(const Scene& scene, const RenderJob& job, std::size_t max_bytes = SIZE_MAX);
 
 // The nearest-neighbour enlargement of `small` to width × height (a coarse frame shown full size).
 Image enlarge_nearest(const Image& small, int width, int height);

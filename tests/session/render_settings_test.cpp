@@ -25,6 +25,8 @@ std::string other_value(const Setting& s) {
     if (name == "time") return "0.5";
     // The checkpoint comes before the resume in the table: the resume reads the file it made.
     if (name == "checkpoint" || name == "resume") return "/tmp/whitted-settings-test.ckpt";
+    if (name == "aov") return "depth";
+    if (name == "aov-file") return "/tmp/whitted-settings-test-layers.png";
     if (!s.choices.empty()) return s.choices.back();  // the defaults come first
     if (std::holds_alternative<bool RenderSettings::*>(s.field)) return "";
     return std::to_string(int(s.min) + 2);  // ints: a value in range other than the default
@@ -113,7 +115,9 @@ TEST(RenderSettings, EveryFrontEndTakesEverySettingOrRefusesItWithAReason) {
         if (std::string(setting.name) == "noise-threshold") args.insert(args.end(), {"--spp", "4"});
         if (std::string(setting.name) != "width") args.insert(args.end(), {"--width", "8"});
         if (std::string(setting.name) != "height") args.insert(args.end(), {"--height", "6"});
-        const auto r = test::run_process(args);
+        std::vector<std::string> whitted = args;  // --aov-file names where --aov's layers go
+        if (std::string(setting.name) == "aov-file") whitted.insert(whitted.end(), {"--aov", "depth"});
+        const auto r = test::run_process(whitted);
         EXPECT_EQ(r.exit_code, 0) << r.output;
 #ifdef WHITTED_VIEWER_PATH
         // whitted-view refuses what it cannot honour, before it opens a window, with the table's reason.
@@ -141,6 +145,8 @@ TEST(RenderSettings, EveryFrontEndTakesEverySettingOrRefusesItWithAReason) {
     }
     std::remove("/tmp/whitted-settings-test.png");
     std::remove("/tmp/whitted-settings-test.ckpt");
+    std::remove("/tmp/whitted-settings-test.depth.png");
+    std::remove("/tmp/whitted-settings-test-layers.depth.png");
 }
 
 }  // namespace
