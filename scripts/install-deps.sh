@@ -11,9 +11,10 @@ set -euo pipefail
 # sanitizer runtimes are in libclang-rt-dev, which clang only recommends.
 # libtinyobjloader-dev: reads the OBJ files of `object mesh` (scene-format.md §9.3).
 # nlohmann-json3-dev: reads Brown CSCI 1230's JSON scene files (scene-format.md §9.5).
+# chromium: only to test `whitted grade`'s HTML report (a headless screenshot of the page); whitted never runs it.
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libcli11-dev libgtest-dev libgmock-dev
           libbenchmark-dev libfltk1.3-dev fluid libopenexr-dev openmpi-bin libopenmpi-dev
-          clang libclang-rt-dev zlib1g-dev libjpeg-dev libtinyobjloader-dev nlohmann-json3-dev)
+          clang libclang-rt-dev zlib1g-dev libjpeg-dev libtinyobjloader-dev nlohmann-json3-dev chromium)
 if [[ "${1:-}" == "--viewer-test" ]]; then packages+=(xvfb x11-apps imagemagick xdotool tesseract-ocr); fi
 
 missing=()

@@ -12,6 +12,7 @@
 #include "accel/scene.h"
 #include "compare_command.h"
 #include "explain_command.h"
+#include "grade_command.h"
 #include "film/image_io.h"
 #include "inspect_command.h"
 #include "interrupt.h"
@@ -231,6 +232,7 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "compare") return whitted::cli::compare_main(argc - 1, argv + 1);
     if (argc > 1 && std::string(argv[1]) == "explain") return whitted::cli::explain_main(argc - 1, argv + 1);
+    if (argc > 1 && std::string(argv[1]) == "grade") return whitted::cli::grade_main(argc - 1, argv + 1);
     try {
         return run(argc, argv);
     } catch (const std::bad_alloc&) {

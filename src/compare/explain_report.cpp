@@ -90,6 +90,23 @@ std::string term_words(const TermFit& fit) {
     return t + " is " + how;
 }
 
+std::string explain_summary(const Explanation& e) {
+    if (!e.differs()) return "no difference";
+    std::string s;
+    if (!e.matches.empty()) {
+        const VariantMatch& m = e.matches.front();
+        s = "looks like: " + m.variant.words + " (" + (std::isinf(m.psnr) ? std::string("identical") : db(m.psnr)) +
+            " against " + db(e.psnr) + " as is)";
+    }
+    if (e.explained >= kFitExplains)
+        for (const TermFit& t : e.terms)
+            if (const std::string words = term_words(t); !words.empty() && t.share >= kTermShare) {
+                s += (s.empty() ? "" : "; ") + words;
+                break;
+            }
+    return s.empty() ? "no named mistake or term" : s;
+}
+
 std::string explain_text(const ExplainInputs& in, const ExplainOptions& o, const Explanation& e) {
     const CompareReport& r = e.compare;
     std::string s = "whitted explain: " + in.image_path + " (" + in.image_format + ") against whitted's render of " +

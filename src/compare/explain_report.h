@@ -17,6 +17,12 @@ struct ExplainInputs {
 // the term as the reference has it (within 10%).
 std::string term_words(const TermFit& fit);
 
+// The explanation in one line, as a grading table shows it: the best-matching named mistake ("looks
+// like: the image upside down (47.0 dB against 19.0 dB as is)") and the term the fit names first ("the
+// specular highlights are missing"); "no difference" for a PASS, "no named mistake or term" when
+// neither is found.
+std::string explain_summary(const Explanation& e);
+
 std::string explain_text(const ExplainInputs& in, const ExplainOptions& options, const Explanation& e);
 std::string explain_json(const ExplainInputs& in, const ExplainOptions& options, const Explanation& e);
 
