@@ -13,6 +13,7 @@
 #include <new>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -209,7 +210,8 @@ int run(int argc, char** argv) {
                 }
             if (scene_problem.empty()) scene_problem = s.path + ": error: the scene could not be loaded";
         }
-        std::map<std::pair<int, int>, LinearImage> references;  // rendered once per size
+        // Rendered once per size (and per kind: an 8-bit file's reference is rounded as its bytes are).
+        std::map<std::tuple<int, int, bool>, LinearImage> references;
         for (const std::string& student : students) {
             if (interrupt_flag().load()) {
                 std::cerr << kProgram << ": interrupted\n";
@@ -267,7 +269,7 @@ int run(int argc, char** argv) {
                 continue;
             }
             RenderJob job = render_job(so, cancel.flag());
-            const auto size = std::make_pair(image.pixels.width, image.pixels.height);
+            const auto size = std::make_tuple(image.pixels.width, image.pixels.height, image.linear);
             auto it = references.find(size);
             if (it == references.end()) {
                 LinearImage rendered = render_variant(*loaded.scene, job, nullptr, !image.linear);

@@ -173,6 +173,13 @@ TEST_F(CliGrade, WrongSizeAndABrokenSceneAreReportedInTheirCells) {
     EXPECT_EQ((*cell(k, "shapes", "alice"))["problem"].string, "10x8, not 48x36");
 }
 
+TEST_F(CliGrade, BadUsageExitsFiveAndWritesNothing) {
+    EXPECT_EQ(whitted({"grade", dir + "/nowhere", subs, "-o", out}).exit_code, 5);
+    EXPECT_EQ(whitted({"grade", scenes, subs, "-o", out, "--explain", "sometimes"}).exit_code, 5);
+    EXPECT_EQ(whitted({"grade", subs, subs, "-o", out}).exit_code, 5);  // no NAME.sc there
+    EXPECT_FALSE(fs::exists(out));
+}
+
 // --timeout (60 s by default, as --untrusted's) is each scene's: one over it gets "time limit" in its
 // cells and the run goes on, as for a Ctrl-C it would not. 1 ms is far less than 64 rays a pixel
 // over 48x36 pixels take.
