@@ -76,7 +76,9 @@ std::vector<std::pair<std::string, std::string>> settings_pairs(std::string_view
 std::string setting_difference(const std::string& made, const std::string& now) {
     const auto now_pairs = settings_pairs(now);
     auto shown = [](const std::string& v) { return v.empty() ? std::string("(none)") : v; };
-    for (const auto& [name, value] : settings_pairs(made)) {
+    for (const auto& pair : settings_pairs(made)) {
+        const std::string& name = pair.first;  // not a structured binding: clang before 16 cannot capture one
+        const std::string& value = pair.second;
         const auto it = std::find_if(now_pairs.begin(), now_pairs.end(), [&](const auto& p) { return p.first == name; });
         if (it == now_pairs.end()) return "";
         if (it->second != value)
