@@ -53,7 +53,7 @@ struct Child {
     pid_t pid = -1;
     std::string log;
     Child(const std::vector<std::string>& argv, const std::string& log_path,
-          const std::vector<std::pair<std::string, std::string>>& env = {}, int pass_fd = -1)
+          const std::vector<std::pair<std::string, std::string>>& env = {})
         : log(log_path) {
         pid = fork();
         if (pid == 0) {
@@ -69,7 +69,6 @@ struct Child {
             std::vector<char*> args;
             for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
             args.push_back(nullptr);
-            (void)pass_fd;  // inherited as is
             execv(args[0], args.data());
             _exit(127);
         }
@@ -121,63 +120,49 @@ inline bool accepts_connections(const std::string& number) {
     return ok;
 }
 
-// An X server of our own on a free display number (Xvfb picks it: -displayfd).
+// An X server of our own on a display number of our own. The number comes from the test's
+// process id, not from Xvfb's -displayfd: that picks the lowest free number, which with tests
+// running in parallel is often one whose server (another test's) is still shutting down; that
+// server then removes the socket file of the new one as it exits (seen in CI: the viewer could not
+// open the display it was given). A server is ours when the display's lock file holds its pid.
 class Xvfb {
 public:
-    // Tries a few times: with tests running in parallel, a display number just given up by
-    // another test's server can be announced while its socket is being taken away (seen in CI:
-    // the viewer could not open the display it was given). A server that does not accept
-    // connections on its socket is replaced by a new one.
     bool start(const std::string& dir, std::string& why) {
-        for (int attempt = 0; attempt < 3; ++attempt) {
-            if (!start_once(dir, why)) return false;
-            for (auto deadline = std::chrono::steady_clock::now() + 2s; std::chrono::steady_clock::now() < deadline;
-                 std::this_thread::sleep_for(20ms))
-                if (accepts_connections(display_.substr(1))) return true;
-            server_.reset();
-        }
-        why = "Xvfb announced displays that accepted no connection, three times";
-        return false;
-    }
-    const std::string& display() const { return display_; }
-
-private:
-    bool start_once(const std::string& dir, std::string& why) {
         std::string xvfb = find_on_path("Xvfb");
         if (xvfb.empty()) {
             why = "Xvfb is not installed (Debian package xvfb; scripts/install-deps.sh --viewer-test installs it)";
             return false;
         }
-        int fds[2];
-        if (pipe(fds) != 0) return why = "pipe failed", false;
-        server_ = std::make_unique<Child>(
-            std::vector<std::string>{xvfb, "-displayfd", std::to_string(fds[1]), "-screen", "0", "1280x1024x24",
-                                     "-nolisten", "tcp"},
-            dir + "/xvfb.log", std::vector<std::pair<std::string, std::string>>{}, fds[1]);
-        close(fds[1]);
-        std::string number;
-        char c;
-        // Xvfb writes the display number and a newline once it accepts connections.
-        fcntl(fds[0], F_SETFL, O_NONBLOCK);
-        const auto deadline = std::chrono::steady_clock::now() + 20s;
-        while (std::chrono::steady_clock::now() < deadline) {
-            ssize_t n = read(fds[0], &c, 1);
-            if (n == 1) {
-                if (c == '\n') break;
-                number += c;
-            } else if (n == 0) {
-                break;
-            } else {
-                std::this_thread::sleep_for(10ms);
+        const long first = 200 + (static_cast<long>(getpid()) * 8) % 24000;
+        for (long number = first; number < first + 8; ++number) {
+            if (fs::exists("/tmp/.X" + std::to_string(number) + "-lock")) continue;
+            server_ = std::make_unique<Child>(
+                std::vector<std::string>{xvfb, ":" + std::to_string(number), "-screen", "0", "1280x1024x24",
+                                         "-nolisten", "tcp"},
+                dir + "/xvfb.log");
+            if (wait_until_ours(number)) {
+                display_ = ":" + std::to_string(number);
+                return true;
             }
+            why = "Xvfb did not start on :" + std::to_string(number) + ": " + server_->output();
+            server_.reset();
         }
-        close(fds[0]);
-        if (number.empty()) {
-            why = "Xvfb did not start: " + server_->output();
-            return false;
+        return false;
+    }
+    const std::string& display() const { return display_; }
+
+private:
+    // Until the server accepts connections and the lock file names it, or it has exited.
+    bool wait_until_ours(long number) {
+        const std::string lock = "/tmp/.X" + std::to_string(number) + "-lock";
+        for (auto deadline = std::chrono::steady_clock::now() + 20s; std::chrono::steady_clock::now() < deadline;
+             std::this_thread::sleep_for(20ms)) {
+            if (server_->wait_exit(0ms) != -1) return false;
+            long owner = 0;
+            std::ifstream(lock) >> owner;
+            if (owner == server_->pid && accepts_connections(std::to_string(number))) return true;
         }
-        display_ = ":" + number;
-        return true;
+        return false;
     }
 
     std::unique_ptr<Child> server_;
