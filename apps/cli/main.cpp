@@ -10,39 +10,26 @@
 #include <string>
 
 #include "accel/scene.h"
+#include "film/image_io.h"
 #include "compare_command.h"
 #include "explain_command.h"
 #include "grade_command.h"
-#include "film/image_io.h"
 #include "inspect_command.h"
 #include "interrupt.h"
 #include "load_report.h"
 #include "progress.h"
 #include "render/load_scene.h"
 #include "render_options.h"
-#include "session/aov_output.h"
-#include "session/image_text.h"
 #include "session/run_limits.h"
 #include "session/session.h"
 #include "session_checkpoint.h"
+#include "session_run.h"
 
 namespace {
 
 using namespace whitted;
 using namespace whitted::cli;
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// Time a --time-limit keeps for writing the image: encoding runs at tens of megapixels a second on
-// this project's 2-core machine (bench/RESULTS.md, PNG encoding); a generous reserve, as a budget
-// must not be overrun.
-double write_reserve_seconds(int width, int height) { return 0.05 + 50e-9 * double(width) * double(height); }
-
-ImageText image_text(const Session& session, const RenderOptions& o) {
-    return render_image_text(o.settings, session.samples_done(), session.passes_done(),
-                             int(session.pass_ends().size()));
-}
 
 int run(int argc, char** argv) {
     const auto start = Clock::now();
@@ -99,16 +86,10 @@ int run(int argc, char** argv) {
     }
 
     install_interrupt_handler();  // from here on Ctrl-C stops the load or the render
-    const Deadline deadline(timeout_seconds(s));
-    // --time-limit: a deadline for the load and the passes, the write's time kept in reserve.
-    const double budget = s.time_limit > 0 ? s.time_limit - write_reserve_seconds(s.width, s.height) : 0.0;
-    const Deadline budget_deadline(s.time_limit > 0 ? std::max(1e-3, budget - seconds_since(start)) : 0.0);
-    auto limit_ran_out = [&]() -> const char* {
-        return deadline.timed_out() ? "--timeout" : budget_deadline.timed_out() ? "--time-limit" : nullptr;
-    };
+    const SessionLimits limits(s, start);
     std::uint64_t inputs = 0;
     LoadResult loaded = load_scene_and_inputs(o, &interrupt_flag(), inputs);
-    if (int code = report_load(loaded, o, "whitted", limit_ran_out()); code != kExitOk) return code;
+    if (int code = report_load(loaded, o, "whitted", limits.ran_out()); code != kExitOk) return code;
 
     RenderJob job = render_job(o, &interrupt_flag());
     const std::size_t left = memory_limit(s) - std::min(memory_limit(s), o.for_image);
@@ -119,12 +100,12 @@ int run(int argc, char** argv) {
     if (pixel) {
         const int code = print_inspection(*loaded.scene, job, *pixel, o.scene_path, inspect_outputs);
         if (code != kExitInterrupted) return code;
-        if (deadline.timed_out())
+        if (limits.timed_out())
             std::cerr << "whitted: error: the time limit of " << timeout_seconds(s)
                       << " s (--timeout) ran out while inspecting\n";
         else
             std::cerr << "whitted: interrupted while inspecting\n";
-        return deadline.timed_out() ? kExitTimeout : kExitInterrupted;
+        return limits.timed_out() ? kExitTimeout : kExitInterrupted;
     }
     if (const std::string hint = sampled_effects_hint(loaded.stats.effects, job.sampling, job.integrator.mode);
         !hint.empty())
@@ -137,94 +118,16 @@ int run(int argc, char** argv) {
     const int passes = int(session.pass_ends().size());
     ProgressLine progress(job.tile_count() * passes - checkpoint.tiles_resumed(), !o.quiet && isatty(STDERR_FILENO));
     std::atomic<int> tiles_finished{0};
-    RenderStats last;
-    bool budget_reached = false;
-    while (!session.done()) {
-        // A pass that the forecast says would not end within the budget is not begun.
-        if (s.time_limit > 0 && session.passes_done() > 0 &&
-            seconds_since(start) + session.forecast_next_pass_seconds() > budget) {
-            budget_reached = true;
-            break;
-        }
-        last = session
-                   .render_pass([&](const Tile& t, const Film& film) {
-                       checkpoint.tile_done(t, film);
-                       progress.tile_done();
-                       if (++tiles_finished == interrupt_after_tiles) std::raise(SIGINT);
-                   })
-                   .render;
-        if (last.cancelled) break;
-        checkpoint.pass_done(session);
-    }
-    checkpoint.flush();
+    const SessionOutcome outcome = run_passes(session, limits, checkpoint, [&](const Tile&, const Film&) {
+        progress.tile_done();
+        if (++tiles_finished == interrupt_after_tiles) std::raise(SIGINT);
+    });
     progress.finish();
-    const bool interrupted = last.cancelled && !budget_deadline.timed_out();
-    // The budget ran out inside a pass: the last whole one stands, as if the forecast had said so.
-    budget_reached = budget_reached || (last.cancelled && budget_deadline.timed_out() && !deadline.timed_out());
-    const bool complete = !interrupted && session.passes_done() > 0 && (session.done() || budget_reached);
-
-    RenderStats total = last;
+    RenderStats total = outcome.last;
     total.rays = session.rays();
     total.seconds = session.seconds();
     if (o.stats) print_stats(loaded.stats, total, session.samples_done(), session.passes_done());
-    // An interrupted render never replaces the output: a good image from an earlier run may be
-    // there (a batch timeout's SIGTERM must not destroy it). Its part goes beside it (the last
-    // whole pass, or the first pass's tiles if there are some and they can be written quickly).
-    if (const std::string why =
-            !complete && session.passes_done() == 0 ? why_no_partial_image(last.tiles_done, s.width, s.height) : "";
-        !why.empty()) {
-        if (limit_ran_out())
-            std::cerr << "whitted: error: the time limit of "
-                      << (deadline.timed_out() ? timeout_seconds(s) : s.time_limit) << " s (" << limit_ran_out()
-                      << ") ran out: " << why << ": nothing written\n";
-        else
-            std::cerr << "whitted: interrupted: " << why << ": nothing written\n";
-        return limit_ran_out() ? kExitTimeout : kExitInterrupted;
-    }
-    const std::string written = complete ? o.output : partial_image_path(o.output);
-    // .exr and .pfm keep the linear values; the 8-bit formats get them through the view transform
-    // (linear: clamped, §7).
-    std::string err;
-    if (!s.aov.empty()) {  // the image and its per-term images (session/aov_output.h)
-        const std::string aov_file = complete || s.aov_file.empty() ? s.aov_file : partial_image_path(s.aov_file);
-        err = write_image_with_aovs(session, written, aov_file, image_text(session, o));
-    } else if (is_linear_output(written)) {
-        LinearImage image = session.film().to_linear();
-        image.text = image_text(session, o);
-        err = write_linear_image(image, written);
-    } else {
-        Image image = session.film().to_image(view_transform(o.settings));
-        image.text = image_text(session, o);
-        err = write_image(image, written);
-    }
-    if (!err.empty()) {
-        std::cerr << "whitted: error: " << err << "\n";
-        return kExitIo;
-    }
-    const std::string reached = session.passes_done() > 0
-                                    ? "the " + std::to_string(session.samples_done()) + " samples per pixel of " +
-                                          std::to_string(session.passes_done()) + " whole passes"
-                                    : "the " + std::to_string(last.tiles_done) + " of " +
-                                          std::to_string(last.tiles_total) + " tiles of the first pass";
-    if (complete && budget_reached) {
-        if (!o.quiet)
-            std::cerr << "wrote " << o.output << ": " << reached << " fitted in the time limit of " << s.time_limit
-                      << " s (" << job.sampling.samples_per_pixel() << " asked for)\n";
-        return kExitOk;
-    }
-    if (!complete && limit_ran_out()) {
-        std::cerr << "whitted: error: the time limit of "
-                  << (deadline.timed_out() ? timeout_seconds(s) : s.time_limit) << " s (" << limit_ran_out()
-                  << ") ran out: wrote " << reached << " to " << written << " (" << o.output << " was not written)\n";
-        return kExitTimeout;
-    }
-    if (!complete) {
-        std::cerr << "whitted: interrupted: wrote " << reached << " to " << written << " (" << o.output
-                  << " was not written)\n";
-        return kExitInterrupted;
-    }
-    if (!o.quiet) std::cerr << "wrote " << o.output << "\n";
-    return 0;
+    return write_session(session, outcome, o, limits, "whitted", kExitTimeout);
 }
 
 }  // namespace

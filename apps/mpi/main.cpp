@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <optional>
 #include <thread>
 
 #include "accel/scene.h"
@@ -31,6 +32,7 @@ struct MpiOptions {
     std::uint64_t schedule_seed = 0;
     bool verify = false;
     TestKnobs knobs;
+    int interrupt_after_tiles = 0;
 };
 
 void add_mpi_options(CLI::App& app, MpiOptions& m) {
@@ -48,6 +50,7 @@ void add_mpi_options(CLI::App& app, MpiOptions& m) {
     app.add_option("--test-slow-ms", m.knobs.slow_ms)->group("");
     app.add_option("--test-slow-others-ms", m.knobs.others_ms)->group("");
     app.add_option("--test-corrupt-rank", m.knobs.corrupt_rank)->group("");
+    app.add_option("--test-interrupt-after-tiles", m.interrupt_after_tiles)->group("");
 }
 
 int run(int argc, char** argv, int rank, int ranks) {
@@ -84,9 +87,10 @@ int run(int argc, char** argv, int rank, int ranks) {
     }
 
     install_interrupt_handler();
-    // --timeout (and --untrusted's 60 s): rank 0 stops the job as a first Ctrl-C would.
-    const Deadline deadline(rank == 0 ? timeout_seconds(o.settings) : 0.0);
-    SharedScene shared = share_scene(o, rank, &interrupt_flag(), deadline);
+    // --timeout (and --untrusted's 60 s) and --time-limit: rank 0 stops the job as a first Ctrl-C would.
+    std::optional<SessionLimits> limits;
+    if (rank == 0) limits.emplace(o.settings, start);
+    SharedScene shared = share_scene(o, rank, &interrupt_flag(), limits ? &*limits : nullptr);
     if (shared.code != 0) return shared.code;
 
     // A checkpoint is never written over what the job reads or writes (--checkpoint scene.sc
@@ -107,10 +111,11 @@ int run(int argc, char** argv, int rank, int ranks) {
     if (refused) return kExitUsage;
 
     RankSetup s;
-    const auto integrator = make_integrator(*shared.loaded.scene, shared.loaded.scene->data.camera,
-                                            render_job(o, nullptr).integrator);
-    s.integrator = integrator.get();
     s.job = render_job(o, nullptr);
+    s.job.tile_size = m.tile_size;
+    const auto integrator =
+        make_integrator(*shared.loaded.scene, s.job.camera_for(*shared.loaded.scene), s.job.integrator);
+    s.integrator = integrator.get();
     s.grid = {o.settings.width, o.settings.height, m.tile_size};
     s.rank = rank;
     s.ranks = ranks;
@@ -120,16 +125,15 @@ int run(int argc, char** argv, int rank, int ranks) {
     s.interrupted = &interrupt_flag();
     if (rank != 0) return run_worker(s);
     s.options = &o;
-    s.deadline = &deadline;
-    // Every setting that changes pixels (the one table's), the input bytes and the tile grid: a
-    // checkpoint is for these only.
-    s.checkpoint_key = {checkpoint_settings(o.settings, m.tile_size), shared.hash, s.grid};
+    s.limits = &*limits;
+    s.scene = shared.loaded.scene;
+    s.loaded = &shared.loaded;
+    s.inputs = shared.hash;  // with every setting that changes pixels and the tile grid, a checkpoint's key
+    s.job.cancel = &interrupt_flag();
     s.schedule_seed = m.schedule_seed;
     s.verify = m.verify;
-    s.checkpoint = checkpoint;
-    s.resume = o.settings.resume;
-    s.checkpoint_seconds = o.settings.checkpoint_every;
     s.grace_seconds = m.grace;
+    s.interrupt_after_tiles = m.interrupt_after_tiles;
     s.broadcast_bytes = shared.bytes;
     s.broadcast_seconds = shared.broadcast_seconds;
     s.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

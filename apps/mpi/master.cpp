@@ -1,26 +1,33 @@
-// Rank 0: hands out tiles (schedule.h), renders its own share on its own thread, merges every
-// share into the one film, checks duplicates, checkpoints, reports progress and writes the image.
+// Rank 0: drives the render session (session/session.h) as whitted does; each pass's tiles are
+// handed out to the ranks (schedule.h) with the pixels they continue from, rank 0 renders its own
+// share on its own thread, every share is merged into the session's film, duplicates are
+// checked, and the image is written as whitted writes it.
 #include <mpi.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <list>
 #include <thread>
 
-#include "session/image_text.h"
-#include "session/session.h"
-#include "film/image_io.h"
 #include "progress.h"
-#include "session/run_limits.h"
 #include "protocol.h"
 #include "ranks.h"
 #include "schedule.h"
+#include "session/run_limits.h"
+#include "session/session.h"
+#include "session_run.h"
 #include "share_queue.h"
 
 namespace whitted::mpi {
 namespace {
+
+using cli::RenderOptions;
+using cli::SessionCheckpoint;
+using cli::SessionOutcome;
 
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
@@ -71,164 +78,220 @@ private:
     Clock::time_point start_ = Clock::now(), drawn_ = start_;
 };
 
-struct Master {
-    const RankSetup& s;
-    Film film;
-    Schedule schedule;
-    CheckpointWriter checkpoint;
-    Progress progress;
-    std::vector<int> threads_of;  // per rank, from its first request
-    std::vector<bool> bye;
-    std::vector<WorkerStats> stats;
-    std::string mismatch;
-    double service_total = 0, service_max = 0;
-    long services = 0;
-    std::uint64_t bytes_received = 0;
-
-    Master(const RankSetup& setup, Film f, const std::vector<bool>& done)
-        : s(setup), film(std::move(f)),
-          schedule(setup.grid.count(), setup.ranks, setup.schedule_seed, done, setup.verify ? 2 : 1),
-          progress(setup.grid.count(), setup.ranks, !setup.options->quiet),
-          threads_of(std::size_t(setup.ranks), 1), bye(std::size_t(setup.ranks), false),
-          stats(std::size_t(setup.ranks)) {
+// A pass's tiles rendered by every rank: the session's PassRenderer in whitted-mpi.
+class RankPasses : public PassRenderer {
+public:
+    RankPasses(const RankSetup& setup, int total_tiles)
+        : s(setup), progress(total_tiles, setup.ranks, !setup.options->quiet),
+          threads_of(std::size_t(setup.ranks), 1), parked(std::size_t(setup.ranks), 0),
+          bye(std::size_t(setup.ranks), false), stats(std::size_t(setup.ranks)) {
         bye[0] = true;  // rank 0 talks to itself without messages
     }
 
-    // A share's tile t has arrived in `from`: keep the first copy, compare any other with it; the
-    // tile is done (checkpointed, counted) once the copies the schedule asks for are in.
-    void merge_tile(int rank, int t, const Film& from) {
-        const Tile r = s.grid.tile(t);
-        const int copy = schedule.arrive(t);
-        if (copy == 1) film.copy_from(from, r);
-        if (copy == schedule.copies()) {
-            checkpoint.append(t, film, s.job.sampling.samples_per_pixel());
-            progress.add(rank, 1, 0);
-        }
-        if (copy > 1 && !same_pixels(film, from, r) && mismatch.empty()) {
-            mismatch = "rank " + std::to_string(rank) + " rendered tile " + std::to_string(t) + " (pixels " +
-                       std::to_string(r.x0) + "," + std::to_string(r.y0) +
-                       ") to other bytes than the rank that rendered it first: the ranks do not compute alike "
-                       "(another CPU, library or build?)";
-        }
-    }
+    RenderStats render(const Integrator& integrator, const RenderJob& job, const std::vector<Tile>& tiles,
+                       const Film* before, Film& into) override;
+    // The end of the job: every rank told there is no more work, and stopped; waits for their
+    // goodbyes (a while: a rank that does not answer is given up).
+    void end_job(bool patient);
+    // Tells every rank the exit code. False if a rank never said goodbye (MPI_Finalize could then
+    // wait for it forever).
+    bool finish(int code);
 
-    void reply(int rank) {
-        const std::vector<int> tiles = mismatch.empty() ? schedule.next(rank, threads_of[std::size_t(rank)])
-                                                         : std::vector<int>{};
-        const std::vector<std::int32_t> msg(tiles.begin(), tiles.end());
-        MPI_Send(msg.data(), int(msg.size()), MPI_INT32_T, rank, kAssign, MPI_COMM_WORLD);
-    }
+    // The progress line's count of tiles (those of every pass, less the resumed).
+    void start_progress(int tiles) { progress = Progress(tiles, s.ranks, !s.options->quiet); }
 
-    void receive(const MPI_Status& st) {
-        const auto t0 = Clock::now();
-        const int from = st.MPI_SOURCE;
-        int count = 0;
-        MPI_Get_count(&st, MPI_BYTE, &count);
-        std::vector<char> msg(std::size_t(std::max(count, 1)));
-        MPI_Recv(msg.data(), count, MPI_BYTE, from, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        bytes_received += std::size_t(count);
-        if (st.MPI_TAG == kRequest) {
-            std::int32_t threads = 1;
-            std::memcpy(&threads, msg.data(), sizeof threads);
-            threads_of[std::size_t(from)] = threads;
-            reply(from);
-        } else if (st.MPI_TAG == kResult) {
-            ResultHeader h;
-            std::memcpy(&h, msg.data(), sizeof h);
-            const char* p = msg.data() + sizeof h;
-            const char* end = msg.data() + count;
-            for (int i = 0; i < h.tiles; ++i) {
-                std::int32_t t = 0;
-                std::memcpy(&t, p, sizeof t);
-                p += sizeof t;
-                Film one(s.grid.width, s.grid.height, s.grid.tile(t));
-                if (!read_tile_pixels(p, end, s.grid.tile(t), one)) break;
-                merge_tile(from, t, one);
-            }
-            progress.add(from, 0, h.rays);
-            if (h.want_more) reply(from);
-        } else if (st.MPI_TAG == kBye) {
-            std::memcpy(&stats[std::size_t(from)], msg.data(), sizeof(WorkerStats));
-            bye[std::size_t(from)] = true;
-        }
-        const double dt = seconds(Clock::now() - t0);
-        service_total += dt;
-        service_max = std::max(service_max, dt);
-        ++services;
-    }
+    std::string mismatch;  // two ranks rendered a tile to different bytes
+    void print_stats(double wall, int passes_tiles) const;
 
-    void cancel_workers() {
-        for (int r = 1; r < s.ranks; ++r)
-            if (!bye[std::size_t(r)]) MPI_Send(nullptr, 0, MPI_BYTE, r, kCancel, MPI_COMM_WORLD);
-    }
-
+private:
+    void merge_tile(int rank, int t, const Film& from);
+    void reply(int rank);
+    void receive(const MPI_Status& st);
+    std::shared_ptr<Share> share_of(std::vector<int> tiles) const;
     bool all_bye() const { return std::find(bye.begin(), bye.end(), false) == bye.end(); }
+    void complete_sends();
 
-    std::string why_stopped() const {
-        if (!s.deadline || !s.deadline->timed_out()) return "interrupted";
-        char limit[32];
-        std::snprintf(limit, sizeof limit, "%g s", timeout_seconds(s.options->settings));
-        return std::string("the time limit of ") + limit + " (--timeout) ran out";
-    }
-
-    int run();
-    // The film to `path` with whitted's words about it: every sample of the schedule's passes when
-    // every tile is in (a partial image: its tiles have them, the others none).
-    std::string write_film(const std::string& path) const {
-        const int passes = int(sample_passes(s.job.sampling).size());
-        const ImageText text = render_image_text(s.options->settings, s.job.sampling.samples_per_pixel(),
-                                                 schedule.all_done() ? passes : 0, passes);
-        if (is_linear_output(path)) {
-            LinearImage image = film.to_linear();
-            image.text = text;
-            return write_linear_image(image, path);
-        }
-        Image image = film.to_image(view_transform(s.options->settings));
-        image.text = text;
-        return write_image(image, path);
-    }
-    void print_stats(double wall, double local_busy) const;
+    const RankSetup& s;
+    struct Send {
+        MPI_Request request;
+        std::vector<char> bytes;
+    };
+    std::list<Send> sends;  // assignments on their way
+    Progress progress;
+    std::unique_ptr<ShareQueue> local;
+    std::vector<int> threads_of;  // per rank, from its first request
+    std::vector<int> parked;      // requests kept for want of work (answered when a pass begins or the job ends)
+    std::vector<bool> bye;
+    std::vector<WorkerStats> stats;
+    bool job_over = false;
+    // The pass under way.
+    int pass = 0;
+    std::unique_ptr<Schedule> schedule;
+    const RenderJob* job = nullptr;
+    const Film* before = nullptr;
+    Film* into = nullptr;
+    int tiles_done = 0;
+    int duplicates = 0;  // of the passes so far
+    double service_total = 0, service_max = 0;
+    long services = 0;
+    std::uint64_t bytes_received = 0;
 };
 
-int Master::run() {
-    const auto start = Clock::now();
-    if (!s.checkpoint.empty()) {
-        std::vector<bool> done(std::size_t(s.grid.count()));
-        for (int t = 0; t < s.grid.count(); ++t) done[std::size_t(t)] = schedule.is_done(t);
-        if (std::string err = checkpoint.open(s.checkpoint, s.checkpoint_key,
-                                              {{&film, done, s.job.sampling.samples_per_pixel()}}, s.checkpoint_seconds);
-            !err.empty())
-            std::cerr << "whitted-mpi: warning: " << err << " (rendering without one)\n";
+std::shared_ptr<Share> RankPasses::share_of(std::vector<int> tiles) const {
+    auto share = std::make_shared<Share>();
+    share->pass = pass;
+    if (job) {
+        share->sample_begin = job->sample_begin;
+        share->sample_end = job->sample_end;
     }
-    ShareQueue local(*s.integrator, s.job, s.grid, 0, s.knobs);
-    bool stopping = false, cancelled = false;
-    Clock::time_point cancel_at{}, give_up_at{};
+    share->tiles = std::move(tiles);
+    return share;
+}
+
+// A share's tile t has arrived in `from`: keep the first copy, compare any other with it; the tile
+// is done (checkpointed, counted) once the copies the schedule asks for are in.
+void RankPasses::merge_tile(int rank, int t, const Film& from) {
+    const Tile r = s.grid.tile(t);
+    const int copy = schedule->arrive(t);
+    if (copy == 1) into->copy_from(from, r);
+    if (copy == schedule->copies()) {
+        ++tiles_done;
+        progress.add(rank, 1, 0);
+        if (job->on_tile) job->on_tile(r);
+    }
+    if (copy > 1 && !same_pixels(*into, from, r) && mismatch.empty()) {
+        mismatch = "rank " + std::to_string(rank) + " rendered tile " + std::to_string(t) + " (pixels " +
+                   std::to_string(r.x0) + "," + std::to_string(r.y0) +
+                   ") to other bytes than the rank that rendered it first: the ranks do not compute alike "
+                   "(another CPU, library or build?)";
+    }
+}
+
+// A request of `rank`: the next tiles of the pass under way, kept for later when there are none
+// (another pass may follow), no tiles once the job is over.
+void RankPasses::reply(int rank) {
+    std::vector<int> tiles;
+    if (!job_over) {
+        if (schedule && mismatch.empty()) tiles = schedule->next(rank, threads_of[std::size_t(rank)]);
+        if (tiles.empty()) {
+            ++parked[std::size_t(rank)];
+            return;
+        }
+    }
+    const std::shared_ptr<Share> share = share_of(std::move(tiles));
+    std::vector<char> msg =
+        pack_assign(*share, s.grid, share->tiles.empty() || job->sample_begin == 0 ? nullptr : before,
+                    share->tiles.empty() ? nullptr : job->active);
+    // Not blocking: an assignment carries pixels, and the rank may be sending a large result at
+    // the same moment (two blocking sends of large messages wait for each other).
+    sends.emplace_back();
+    sends.back().bytes = std::move(msg);
+    MPI_Isend(sends.back().bytes.data(), int(sends.back().bytes.size()), MPI_BYTE, rank, kAssign, MPI_COMM_WORLD,
+              &sends.back().request);
+}
+
+void RankPasses::complete_sends() {
+    for (auto it = sends.begin(); it != sends.end();) {
+        int done = 0;
+        MPI_Test(&it->request, &done, MPI_STATUS_IGNORE);
+        it = done ? sends.erase(it) : std::next(it);
+    }
+}
+
+void RankPasses::receive(const MPI_Status& st) {
+    const auto t0 = Clock::now();
+    const int from = st.MPI_SOURCE;
+    int count = 0;
+    MPI_Get_count(&st, MPI_BYTE, &count);
+    std::vector<char> msg(std::size_t(std::max(count, 1)));
+    MPI_Recv(msg.data(), count, MPI_BYTE, from, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    bytes_received += std::size_t(count);
+    if (st.MPI_TAG == kRequest) {
+        std::int32_t threads = 1;
+        std::memcpy(&threads, msg.data(), sizeof threads);
+        threads_of[std::size_t(from)] = threads;
+        reply(from);
+    } else if (st.MPI_TAG == kResult) {
+        ResultHeader h;
+        std::memcpy(&h, msg.data(), sizeof h);
+        const char* p = msg.data() + sizeof h;
+        const char* end = msg.data() + count;
+        // Tiles of a pass that has ended came too late (duplicates at its tail): not merged.
+        for (int i = 0; i < h.tiles && h.pass == pass && schedule; ++i) {
+            std::int32_t t = 0;
+            std::memcpy(&t, p, sizeof t);
+            p += sizeof t;
+            Film one(s.grid.width, s.grid.height, s.grid.tile(t));
+            if (!read_tile_pixels(p, end, s.grid.tile(t), one)) break;
+            merge_tile(from, t, one);
+        }
+        progress.add(from, 0, h.rays);
+        if (h.want_more) reply(from);
+    } else if (st.MPI_TAG == kBye) {
+        std::memcpy(&stats[std::size_t(from)], msg.data(), sizeof(WorkerStats));
+        bye[std::size_t(from)] = true;
+    }
+    const double dt = seconds(Clock::now() - t0);
+    service_total += dt;
+    service_max = std::max(service_max, dt);
+    ++services;
+}
+
+RenderStats RankPasses::render(const Integrator& integrator, const RenderJob& pass_job,
+                               const std::vector<Tile>& tiles, const Film* pass_before, Film& pass_into) {
+    const auto start = Clock::now();
+    if (!local) local = std::make_unique<ShareQueue>(integrator, pass_job, s.grid, 0, s.knobs);
+    ++pass;
+    job = &pass_job;
+    before = pass_before;
+    into = &pass_into;
+    tiles_done = 0;
+    // The tiles not in this pass (done before a resume) count as done for the schedule.
+    std::vector<bool> done(std::size_t(s.grid.count()), true);
+    for (const Tile& t : tiles) done[std::size_t(s.grid.index_of(t))] = false;
+    schedule = std::make_unique<Schedule>(s.grid.count(), s.ranks, s.schedule_seed, done, s.verify ? 2 : 1);
+    // Requests kept from the pass before are answered first.
+    for (int r = 1; r < s.ranks; ++r)
+        for (int n = parked[std::size_t(r)]; n > 0; --n) {
+            --parked[std::size_t(r)];
+            reply(r);
+        }
+    const bool first = pass_job.sample_begin == 0;
+    bool stopping = false;
+    Clock::time_point stop_at{};
     for (;;) {
         bool busy = false;
         const auto now = Clock::now();
-        if (!stopping && (s.interrupted->load(std::memory_order_relaxed) || !mismatch.empty())) {
-            // Ctrl-C: hand out nothing more, let the tiles in flight come in for a moment.
+        if (!stopping && ((pass_job.cancel && pass_job.cancel->load(std::memory_order_relaxed)) || !mismatch.empty())) {
+            // Ctrl-C or a time limit: hand out nothing more. A later pass is dropped whole (the last
+            // whole one stands); in the first, the tiles in flight may come in for a moment.
             stopping = true;
-            schedule.stop();
-            cancel_at = mismatch.empty() ? now + std::chrono::milliseconds(int(s.grace_seconds * 1000)) : now;
+            schedule->stop();
+            stop_at = first && mismatch.empty() ? now + std::chrono::milliseconds(int(s.grace_seconds * 1000)) : now;
         }
-        if (!cancelled && ((stopping && now >= cancel_at) || schedule.all_done())) {
-            // Done (duplicates still out are no longer needed) or out of patience.
-            cancelled = true;
-            schedule.stop();
-            local.cancel();
-            cancel_workers();
-            give_up_at = now + std::chrono::milliseconds(stopping ? 300 : 60000);
-        }
-        while (!cancelled && local.pending() < 2) {
-            std::vector<int> tiles = schedule.next(0, s.threads);
-            if (tiles.empty()) break;
-            local.push(std::move(tiles));
+        if (schedule->all_done() || (stopping && now >= stop_at)) break;
+        while (!stopping && local->pending() < 2) {
+            std::vector<int> mine = schedule->next(0, s.threads);
+            if (mine.empty()) break;
+            std::shared_ptr<Share> share = share_of(std::move(mine));
+            if (!first) {
+                PixelRegion box = s.grid.tile(share->tiles[0]);
+                for (int t : share->tiles) {
+                    const Tile r = s.grid.tile(t);
+                    box = {std::min(box.x0, r.x0), std::min(box.y0, r.y0), std::max(box.x1, r.x1),
+                           std::max(box.y1, r.y1)};
+                }
+                share->before = Film(s.grid.width, s.grid.height, box);
+                for (int t : share->tiles) share->before.copy_from(*pass_before, s.grid.tile(t));
+            }
+            if (pass_job.active) share->active = *pass_job.active;
+            local->push(std::move(share));
         }
         bool last = false;
-        while (auto share = local.pop_finished(last)) {
+        while (auto share = local->pop_finished(last)) {
             busy = true;
-            for (int t : share->tiles) merge_tile(0, t, share->film);
+            if (share->pass == pass)
+                for (int t : share->tiles) merge_tile(0, t, share->film);
             progress.add(0, 0, share->rays);
         }
         int flag = 0;
@@ -237,69 +300,70 @@ int Master::run() {
             busy = true;
             receive(st);
         }
+        complete_sends();
         progress.draw();
-        checkpoint.flush();
-        if (cancelled && all_bye() && local.pending() == 0) break;
-        if (cancelled && Clock::now() > give_up_at) break;  // a rank that does not answer: write what is here
         if (!busy) std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
-    const double render_wall = seconds(Clock::now() - start);  // the image write is not rendering
-    progress.draw(true);
-    progress.finish();
-    checkpoint.flush(true);
-
-    int code = cli::kExitOk;
-    // An interrupted job never replaces the output (a good image may be there): its part goes beside
-    // it, if there is one and it can be written quickly.
-    const std::string written = schedule.all_done() ? s.options->output : partial_image_path(s.options->output);
-    const std::string no_partial =
-        schedule.all_done() ? "" : why_no_partial_image(schedule.done_count(), s.grid.width, s.grid.height);
-    if (!mismatch.empty()) {
-        std::cerr << "whitted-mpi: error: " << mismatch << "; nothing written\n";
-        code = kExitMismatch;
-    } else if (!no_partial.empty()) {
-        std::cerr << "whitted-mpi: " << why_stopped() << ": " << no_partial << ": nothing written\n";
-        code = cli::kExitInterrupted;
-    } else if (std::string err = write_film(written); !err.empty()) {
-        std::cerr << "whitted-mpi: error: " << err << "\n";
-        code = cli::kExitIo;
-    } else if (!schedule.all_done() && s.deadline && s.deadline->timed_out()) {
-        std::cerr << "whitted-mpi: error: the time limit of " << timeout_seconds(s.options->settings)
-                  << " s (--timeout) ran out: wrote the " << schedule.done_count() << " of " << schedule.tile_count()
-                  << " tiles rendered so far to " << written << " (" << s.options->output << " was not written)\n";
-        code = cli::kExitInterrupted;  // as a batch system's SIGTERM (4 means two ranks disagreed)
-    } else if (!schedule.all_done()) {
-        std::cerr << "whitted-mpi: " << why_stopped() << ": wrote the " << schedule.done_count() << " of "
-                  << schedule.tile_count() << " tiles rendered so far to " << written << " (" << s.options->output
-                  << " was not written)\n";
-        code = cli::kExitInterrupted;
-    } else if (!s.options->quiet) {
-        std::cerr << "wrote " << s.options->output << "\n";
-    }
-    if (s.options->stats) print_stats(render_wall, local.busy_seconds());
-    const std::int32_t c = code;
-    for (int r = 1; r < s.ranks; ++r) MPI_Send(&c, 1, MPI_INT32_T, r, kFinish, MPI_COMM_WORLD);
-    if (!all_bye()) {  // some rank never finished: MPI_Finalize could wait for it forever
-        std::fflush(stderr);
-        std::_Exit(code);
-    }
-    return code;
+    // What rank 0 still renders of this pass is of no more use (tiles handed out twice at the tail).
+    local->drop();
+    schedule->stop();
+    duplicates += schedule->duplicates_sent();
+    RenderStats out;
+    out.tiles_total = int(tiles.size());
+    out.tiles_done = tiles_done;
+    out.cancelled = !schedule->all_done();
+    // Between passes nothing is merged (the pass's job and films are the session's, for this call).
+    schedule.reset();
+    job = nullptr;
+    before = nullptr;
+    into = nullptr;
+    out.threads = s.threads;
+    out.seconds = seconds(Clock::now() - start);
+    return out;
 }
 
-void Master::print_stats(double wall, double local_busy) const {
+void RankPasses::end_job(bool patient) {
+    job_over = true;
+    if (local) local->cancel();
+    for (int r = 1; r < s.ranks; ++r) {
+        if (!bye[std::size_t(r)]) MPI_Send(nullptr, 0, MPI_BYTE, r, kCancel, MPI_COMM_WORLD);
+        for (; parked[std::size_t(r)] > 0; --parked[std::size_t(r)]) reply(r);
+    }
+    const auto give_up_at = Clock::now() + (patient ? std::chrono::seconds(60) : std::chrono::seconds(1));
+    while ((!all_bye() || !sends.empty()) && Clock::now() < give_up_at) {
+        int flag = 0;
+        MPI_Status st;
+        bool busy = false;
+        while (MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st), flag) {
+            busy = true;
+            receive(st);
+        }
+        complete_sends();
+        if (!busy) std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    progress.draw(true);
+    progress.finish();
+}
+
+bool RankPasses::finish(int code) {
+    const std::int32_t c = code;
+    for (int r = 1; r < s.ranks; ++r) MPI_Send(&c, 1, MPI_INT32_T, r, kFinish, MPI_COMM_WORLD);
+    return all_bye();
+}
+
+void RankPasses::print_stats(double wall, int passes_tiles) const {
     std::fprintf(stderr,
-                 "ranks %d, tiles %d (%dx%d px), %d %s; setup %.3fs (broadcast %zu bytes in %.3fs); "
-                 "render %.3fs, %.2f Mrays/s\n",
-                 s.ranks, s.grid.count(), s.grid.size, s.grid.size,
-                 s.verify ? schedule.done_count() : schedule.duplicates_sent(),
-                 s.verify ? "rendered twice and compared" : "duplicates sent", s.setup_seconds,
-                 s.broadcast_bytes, s.broadcast_seconds, wall, wall > 0 ? double(progress.rays()) / wall * 1e-6 : 0.0);
+                 "ranks %d, tiles %d (%dx%d px) a pass, %d tiles of passes, %d %s; setup %.3fs (broadcast %zu bytes "
+                 "in %.3fs); render %.3fs, %.2f Mrays/s\n",
+                 s.ranks, s.grid.count(), s.grid.size, s.grid.size, passes_tiles,
+                 s.verify ? passes_tiles : duplicates,
+                 s.verify ? "rendered twice and compared" : "duplicates sent", s.setup_seconds, s.broadcast_bytes,
+                 s.broadcast_seconds, wall, wall > 0 ? double(progress.rays()) / wall * 1e-6 : 0.0);
     std::fprintf(stderr, "master: %ld requests served, %.1f us mean, %.1f us max; %llu bytes received (%.0f per tile)\n",
                  services, services ? service_total / double(services) * 1e6 : 0.0, service_max * 1e6,
-                 (unsigned long long)bytes_received,
-                 schedule.done_count() ? double(bytes_received) / schedule.done_count() : 0.0);
+                 (unsigned long long)bytes_received, passes_tiles ? double(bytes_received) / passes_tiles : 0.0);
     std::fprintf(stderr, "rank 0: %d threads, %d tiles, busy %.3fs, idle %.3fs\n", s.threads, progress.tiles_of(0),
-                 local_busy, std::max(0.0, wall - local_busy));
+                 local ? local->busy_seconds() : 0.0, std::max(0.0, wall - (local ? local->busy_seconds() : 0.0)));
     for (int r = 1; r < s.ranks; ++r) {
         const WorkerStats& w = stats[std::size_t(r)];
         std::fprintf(stderr, "rank %d: %d threads, %d tiles (%d kept), busy %.3fs, idle %.3fs, sent %llu bytes\n", r,
@@ -311,28 +375,38 @@ void Master::print_stats(double wall, double local_busy) const {
 }  // namespace
 
 int run_master(const RankSetup& s) {
-    Film film(s.grid.width, s.grid.height);
-    std::vector<bool> done;
-    if (!s.resume.empty()) {
-        if (std::string err = read_checkpoint(s.resume, s.checkpoint_key, s.job.sampling.samples_per_pixel(), film, done,
-                                              s.interrupted); !err.empty()) {
-            std::cerr << "whitted-mpi: error: " << err << "\n";
-            const std::int32_t c = cli::kExitUsage;
-            // Workers are waiting for work: tell them the job is over.
-            for (int r = 1; r < s.ranks; ++r) {
-                std::int32_t threads = 0;
-                MPI_Recv(&threads, 1, MPI_INT32_T, r, kRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-                MPI_Recv(&threads, 1, MPI_INT32_T, r, kRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-                MPI_Send(&c, 1, MPI_INT32_T, r, kFinish, MPI_COMM_WORLD);
-            }
-            return c;
+    const RenderOptions& o = *s.options;
+    const auto start = Clock::now();
+    RankPasses ranks(s, 0);
+    Session session(s.scene, s.job, &ranks);
+    SessionCheckpoint checkpoint;
+    if (cli::uses_checkpoint(o.settings))
+        if (const int code = checkpoint.start(o, *s.loaded, s.inputs, session, "whitted-mpi"); code != cli::kExitOk) {
+            ranks.end_job(false);
+            ranks.finish(code);
+            return code;
         }
+    ranks.start_progress(s.grid.count() * int(session.pass_ends().size()) - checkpoint.tiles_resumed());
+    int tiles_merged = 0;
+    const SessionOutcome outcome = run_passes(session, *s.limits, checkpoint, [&](const Tile&, const Film&) {
+        if (++tiles_merged == s.interrupt_after_tiles) std::raise(SIGINT);
+    });
+    const double render_wall = seconds(Clock::now() - start);  // the image write is not rendering
+    ranks.end_job(outcome.complete);
+    int code = cli::kExitOk;
+    if (!ranks.mismatch.empty()) {
+        std::cerr << "whitted-mpi: error: " << ranks.mismatch << "; nothing written\n";
+        code = kExitMismatch;
+    } else {
+        // A time limit that ran out exits 130, as a batch system's SIGTERM (4 means two ranks disagreed).
+        code = write_session(session, outcome, o, *s.limits, "whitted-mpi", cli::kExitInterrupted);
     }
-    if (!s.resume.empty() && !s.options->quiet)
-        std::cerr << "whitted-mpi: resuming: " << std::count(done.begin(), done.end(), true) << " of " << s.grid.count()
-                  << " tiles from " << s.resume << "\n";
-    Master m(s, std::move(film), done);
-    return m.run();
+    if (o.stats) ranks.print_stats(render_wall, s.grid.count() * session.passes_done() + (outcome.complete ? 0 : outcome.last.tiles_done));
+    if (!ranks.finish(code)) {  // some rank never finished: MPI_Finalize could wait for it forever
+        std::fflush(stderr);
+        std::_Exit(code);
+    }
+    return code;
 }
 
 }  // namespace whitted::mpi

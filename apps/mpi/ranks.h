@@ -1,13 +1,17 @@
 #pragma once
-// The two roles of a whitted-mpi job once every rank has the scene: rank 0 hands out tiles,
-// renders too, merges, checkpoints and writes the image; the others render what they are given.
+// The two roles of a whitted-mpi job once every rank has the scene: rank 0 drives the render
+// session, hands out each pass's tiles, renders too, merges, checkpoints and writes the image; the
+// others render what they are given.
 #include <atomic>
 #include <cstdint>
 #include <string>
 
 #include "interrupt.h"
+#include <memory>
+
+#include "render/load_scene.h"
 #include "render_options.h"
-#include "session/checkpoint.h"
+#include "session_run.h"
 #include "tiles.h"
 
 namespace whitted::mpi {
@@ -25,12 +29,14 @@ struct RankSetup {
     const std::atomic<bool>* interrupted = nullptr;
     // Rank 0 only:
     const cli::RenderOptions* options = nullptr;
-    const cli::Deadline* deadline = nullptr;  // --timeout
-    CheckpointKey checkpoint_key;
+    const cli::SessionLimits* limits = nullptr;  // --timeout, --time-limit
+    std::shared_ptr<const Scene> scene;
+    const LoadResult* loaded = nullptr;  // its texture and mesh files (what a checkpoint may not be)
+    std::uint64_t inputs = 0;            // the hash of every input byte (a checkpoint's key)
     std::uint64_t schedule_seed = 0;
     bool verify = false;  // every tile rendered by two ranks and compared
-    std::string checkpoint, resume;
-    double checkpoint_seconds = 5, grace_seconds = 0.5;
+    double grace_seconds = 0.5;
+    int interrupt_after_tiles = 0;  // test-only: Ctrl-C as the Nth tile of the job is merged
     double setup_seconds = 0, broadcast_seconds = 0;
     std::size_t broadcast_bytes = 0;
 };

@@ -8,6 +8,7 @@
 #include "render/load_scene.h"
 #include "interrupt.h"
 #include "render_options.h"
+#include "session_run.h"
 
 namespace whitted::mpi {
 
@@ -23,9 +24,9 @@ struct SharedScene {
     double broadcast_seconds = 0, load_seconds = 0;
 };
 
-// Collective: rank 0 loads o.scene_path (reporting its diagnostics once, and that `deadline` ran
-// out if it did), the others build the scene from the broadcast bytes.
+// Collective: rank 0 loads o.scene_path (reporting its diagnostics once, and that a limit of
+// `limits` ran out if one did), the others build the scene from the broadcast bytes.
 SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic<bool>* cancel,
-                        const cli::Deadline& deadline);
+                        const cli::SessionLimits* limits);
 
 }  // namespace whitted::mpi

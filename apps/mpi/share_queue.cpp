@@ -21,10 +21,11 @@ ShareQueue::~ShareQueue() {
     thread_.join();
 }
 
-void ShareQueue::push(std::vector<int> tiles) {
+void ShareQueue::push(std::shared_ptr<const Share> share) {
     {
         std::lock_guard lock(mutex_);
-        queued_.push_back(std::move(tiles));
+        if (cancelled_) return;
+        queued_.push_back(std::move(share));
     }
     wake_.notify_all();
 }
@@ -48,7 +49,18 @@ int ShareQueue::pending() const {
 void ShareQueue::cancel() {
     std::lock_guard lock(mutex_);
     cancel_ = true;
+    cancelled_ = true;
     queued_.clear();
+}
+
+void ShareQueue::drop() {
+    std::unique_lock lock(mutex_);
+    if (cancelled_) return;
+    cancel_ = true;
+    queued_.clear();
+    idle_.wait(lock, [&] { return rendering_ == 0; });
+    finished_.clear();
+    cancel_ = false;
 }
 
 double ShareQueue::busy_seconds() const {
@@ -61,21 +73,25 @@ void ShareQueue::run() {
     for (;;) {
         wake_.wait(lock, [&] { return closing_ || !queued_.empty(); });
         if (closing_) return;
-        std::vector<int> tiles = std::move(queued_.front());
+        const std::shared_ptr<const Share> share = std::move(queued_.front());
         queued_.pop_front();
+        const std::vector<int>& tiles = share->tiles;
         ++rendering_;
         const std::size_t batch = std::size_t(std::max(16, 4 * job_.threads));
         for (std::size_t at = 0; at < tiles.size(); at += batch) {
             const std::size_t end = std::min(tiles.size(), at + batch);
             const std::vector<int> part(tiles.begin() + std::ptrdiff_t(at), tiles.begin() + std::ptrdiff_t(end));
             lock.unlock();
-            RenderedShare share = render_share(integrator_, job_, grid_, part, rank_, knobs_);
+            RenderedShare done = render_share(integrator_, job_, grid_, *share, part, rank_, knobs_);
             lock.lock();
-            busy_ += share.seconds;
+            busy_ += done.seconds;
             const bool last = end == tiles.size() || cancel_;
-            if (last) --rendering_;
-            finished_.emplace_back(std::move(share), last);
-            if (last) break;
+            finished_.emplace_back(std::move(done), last);
+            if (last) {
+                --rendering_;
+                idle_.notify_all();
+                break;
+            }
         }
     }
 }

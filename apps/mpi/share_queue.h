@@ -20,13 +20,17 @@ public:
     ShareQueue(const Integrator& integrator, const RenderJob& job, const TileGrid& grid, int rank, TestKnobs knobs);
     ~ShareQueue();
 
-    void push(std::vector<int> tiles);
+    void push(std::shared_ptr<const Share> share);
     // The next finished batch; `last_of_share` tells the share's last batch.
     std::optional<RenderedShare> pop_finished(bool& last_of_share);
     // Shares queued or being rendered, not yet popped as finished.
     int pending() const;
-    // Stops the share being rendered (its finished tiles still come out) and drops the queued ones.
+    // Stops the share being rendered (its finished tiles still come out) and drops the queued ones;
+    // nothing is rendered after.
     void cancel();
+    // The end of a pass: stops the share being rendered and drops it, the queued and the finished
+    // ones (of no more use), then takes new shares again.
+    void drop();
     double busy_seconds() const;
 
 private:
@@ -39,10 +43,11 @@ private:
     std::atomic<bool> cancel_{false};
     mutable std::mutex mutex_;
     std::condition_variable wake_;
-    std::deque<std::vector<int>> queued_;
+    std::deque<std::shared_ptr<const Share>> queued_;
     std::deque<std::pair<RenderedShare, bool>> finished_;
     int rendering_ = 0;
-    bool closing_ = false;
+    bool closing_ = false, cancelled_ = false;
+    std::condition_variable idle_;
     double busy_ = 0;
     std::thread thread_;
 };

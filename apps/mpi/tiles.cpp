@@ -9,9 +9,10 @@
 namespace whitted::mpi {
 
 RenderedShare render_share(const Integrator& integrator, const RenderJob& job, const TileGrid& grid,
-                           const std::vector<int>& tiles, int rank, const TestKnobs& knobs) {
-    RenderedShare share;
-    if (tiles.empty()) return share;
+                           const Share& share, const std::vector<int>& tiles, int rank, const TestKnobs& knobs) {
+    RenderedShare out;
+    out.pass = share.pass;
+    if (tiles.empty()) return out;
     PixelRegion box = grid.tile(tiles[0]);
     std::vector<Tile> rects;
     for (int t : tiles) {
@@ -19,21 +20,27 @@ RenderedShare render_share(const Integrator& integrator, const RenderJob& job, c
         rects.push_back(r);
         box = {std::min(box.x0, r.x0), std::min(box.y0, r.y0), std::max(box.x1, r.x1), std::max(box.y1, r.y1)};
     }
-    share.film = Film(grid.width, grid.height, box);
+    out.film = Film(grid.width, grid.height, box);
+    // Each tile goes on from the samples it had (the session adds a pass's samples in order).
+    if (share.sample_begin > 0)
+        for (const Tile& r : rects) out.film.copy_from(share.before, r);
     RenderJob j = job;
     j.tile_size = grid.size;
+    j.sample_begin = share.sample_begin;
+    j.sample_end = share.sample_end;
+    j.active = share.active.empty() ? nullptr : &share.active;
     std::mutex m;
     j.on_tile = [&](const Tile& r) {
         if (const int ms = knobs.delay_ms(rank); ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(ms));
         std::lock_guard lock(m);
-        share.tiles.push_back(grid.index_of(r));
+        out.tiles.push_back(grid.index_of(r));
     };
-    const RenderStats stats = render_tiles(integrator, j, rects, share.film);
-    share.rays = stats.rays.total();
-    share.seconds = stats.seconds;
+    const RenderStats stats = render_tiles(integrator, j, rects, out.film);
+    out.rays = stats.rays.total();
+    out.seconds = stats.seconds;
     if (rank == knobs.corrupt_rank)
-        for (int t : share.tiles) share.film.at(grid.tile(t).x0, grid.tile(t).y0).sum.x += 1e-3f;
-    return share;
+        for (int t : out.tiles) out.film.at(grid.tile(t).x0, grid.tile(t).y0).sum.x += 1e-3f;
+    return out;
 }
 
 bool same_pixels(const Film& a, const Film& b, const Tile& t) {

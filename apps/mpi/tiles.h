@@ -2,6 +2,7 @@
 // The rendering of a share of the image's tiles (session/tile_grid.h) on all of a rank's cores.
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "film/film.h"
@@ -11,8 +12,20 @@
 
 namespace whitted::mpi {
 
+// Tiles handed to a rank for one pass of the session (session/session.h): their samples
+// [sample_begin, sample_end), the pixels they continue from (the last whole pass; none in the first
+// pass) and, with adaptive sampling, which pixels still take samples.
+struct Share {
+    int pass = 0;
+    int sample_begin = 0, sample_end = 0;
+    std::vector<int> tiles;
+    Film before;                       // covers the tiles (empty in the first pass)
+    std::vector<std::uint8_t> active;  // the whole image's pixels, 1 = sampling (empty: every pixel)
+};
+
 // The tiles of one share, rendered: those finished (all of them unless cancelled) and their pixels.
 struct RenderedShare {
+    int pass = 0;
     std::vector<int> tiles;  // finished, in the order they finished
     Film film;               // covers every tile of the share
     std::uint64_t rays = 0;
@@ -27,9 +40,10 @@ struct TestKnobs {
     int corrupt_rank = -1;
 };
 
-// Renders `tiles` of `grid` with the job's threads; stops early when `cancel` is set.
+// Renders `tiles` (some of the share's) of `grid` with the job's threads and the share's samples;
+// stops early when job.cancel is set.
 RenderedShare render_share(const Integrator& integrator, const RenderJob& job, const TileGrid& grid,
-                           const std::vector<int>& tiles, int rank, const TestKnobs& knobs);
+                           const Share& share, const std::vector<int>& tiles, int rank, const TestKnobs& knobs);
 
 // True when tile t holds the same bytes in both films.
 bool same_pixels(const Film& a, const Film& b, const Tile& t);

@@ -1,5 +1,6 @@
-// A worker rank: keeps two requests in flight, renders what it is given on its own thread, sends
-// each share back in batches as they finish (the last with the next request), and stops when told or out of work.
+// A worker rank: keeps two requests in flight, renders what it is given (tiles of a pass, with the
+// pixels they continue from) on its own thread, sends each share back in batches as they finish
+// (the last with the next request), and stops when told or when the job has no more work.
 #include <mpi.h>
 
 #include <chrono>
@@ -42,10 +43,11 @@ int run_worker(const RankSetup& s) {
                 queue.cancel();
             } else if (st.MPI_TAG == kAssign) {
                 --in_flight;
-                std::vector<int> tiles(std::size_t(count) / sizeof(std::int32_t));
-                if (!tiles.empty()) std::memcpy(tiles.data(), msg.data(), tiles.size() * sizeof(std::int32_t));
-                if (tiles.empty()) no_more = true;
-                else queue.push(std::move(tiles));
+                auto share = std::make_shared<Share>();
+                if (!unpack_assign(msg.data(), msg.data() + count, s.grid, *share) || share->tiles.empty())
+                    no_more = true;
+                else
+                    queue.push(std::move(share));
             }
         }
         // Ctrl-C (mpirun's SIGTERM): ask for nothing more; rank 0 says when to stop rendering.

@@ -55,12 +55,9 @@ const std::vector<Setting>& render_settings_table() {
         {"noise-threshold", "Noise threshold",
          "Adaptive sampling: a pixel takes no more samples once its error estimate is below this (e.g. 0.01; 0 = "
          "off); needs --spp > 1",
-         &S::noise_threshold, 0, 1, {}, true, kMpi | kViewer,
-         "adaptive sampling needs passes over the whole image, and whitted-mpi renders each tile's samples at once",
-         kViewerRendersUntilStopped},
+         &S::noise_threshold, 0, 1, {}, true, kViewer, "", kViewerRendersUntilStopped},
         {"min-spp", "Min SPP", "Adaptive sampling: the samples every pixel takes before it may stop", &S::min_spp, 1,
-         Sampler::kMaxSpp, {}, true, kMpi | kViewer, "whitted-mpi has no adaptive sampling (see --noise-threshold)",
-         kViewerRendersUntilStopped},
+         Sampler::kMaxSpp, {}, true, kViewer, "", kViewerRendersUntilStopped},
         {"seed", "Seed",
          "Another seed gives other, equally good sample values: an independent render of the same scene (a "
          "reference to measure noise against, or renders to average); 0 = the default",
@@ -99,10 +96,7 @@ const std::vector<Setting>& render_settings_table() {
         {"time-limit", "Time limit",
          "Render whole passes while they fit in this many seconds (load and write included), then write the complete "
          "image at the samples reached, exit 0; 0 = none",
-         &S::time_limit, 0, 1e7, {}, false, kMpi | kViewer,
-         "a time budget renders whole passes over the image, and whitted-mpi renders each tile's samples at once; "
-         "use --timeout (or the batch system's limit)",
-         kViewerRendersUntilStopped},
+         &S::time_limit, 0, 1e7, {}, false, kViewer, "", kViewerRendersUntilStopped},
         {"photons", "Photons",
          "Path mode: photons per sample for caustics, the light of point, spot and directional lights through "
          "glass and off mirrors (0 = none; used only in scenes with such lights and an ideal mirror or glass)",

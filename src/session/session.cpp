@@ -22,9 +22,11 @@ std::vector<int> sample_passes(const SamplingSettings& sampling) {
     return ends;
 }
 
-Session::Session(std::shared_ptr<const Scene> scene, const RenderJob& job)
+Session::Session(std::shared_ptr<const Scene> scene, const RenderJob& job) : Session(std::move(scene), job, nullptr) {}
+
+Session::Session(std::shared_ptr<const Scene> scene, const RenderJob& job, PassRenderer* renderer)
     : scene_(std::move(scene)), job_(job),
-      integrator_(make_integrator(*scene_, job.camera_for(*scene_), job.integrator)),
+      integrator_(make_integrator(*scene_, job.camera_for(*scene_), job.integrator)), renderer_(renderer),
       passes_(sample_passes(job.sampling)), tiles_(cut_into_tiles(job.render_region(), job.tile_size)) {
     job_.on_tile = nullptr;  // the session's own, per pass
     const PixelRegion region = job_.render_region();
@@ -33,6 +35,7 @@ Session::Session(std::shared_ptr<const Scene> scene, const RenderJob& job)
     if (!job_.aovs.empty()) {
         if (const std::string problem = aov_problem(*scene_, job_); !problem.empty())
             throw std::invalid_argument(problem);
+        if (renderer_) throw std::invalid_argument("per-term images (--aov) are rendered by this process only");
         aov_plan_ = std::make_unique<AovPlan>();
         AovPlan::make(job_.aovs, job_.integrator.mode, scene_->data.lights.size(), *aov_plan_);
         aov_films_[0].reset(job_.width, job_.height, region, aov_plan_->channels());
@@ -92,6 +95,8 @@ PassStats Session::render_pass(const std::function<void(const Tile&, const Film&
                                                  if (!first) aov_films_[into].copy_from(aov_films_[shown], t);
                                                  return aov_films_[into];
                                              });
+    } else if (renderer_) {
+        pass.render = renderer_->render(*integrator_, job, tiles, first ? nullptr : shown_, target);
     } else {
         pass.render = render_tiles_into(*integrator_, job, tiles, film_for);
     }

@@ -26,6 +26,7 @@
 #include "render/aov.h"
 #include "render/render_job.h"
 #include "render/renderer.h"
+#include "session/pass_renderer.h"
 
 namespace whitted {
 
@@ -62,6 +63,9 @@ public:
     Session(std::shared_ptr<const Scene> scene, const RenderJob& job);
     // With job.aovs, the per-term images too (render/aov.h), over the same samples as the image;
     // the job must have passed aov_problem (a std::invalid_argument otherwise).
+    // `renderer` (optional, outliving the session) renders the passes' tiles instead of this
+    // process's threads (whitted-mpi's ranks); not with job.aovs.
+    Session(std::shared_ptr<const Scene> scene, const RenderJob& job, PassRenderer* renderer);
     ~Session();
     Session(const Session&) = delete;
     Session& operator=(const Session&) = delete;
@@ -118,6 +122,7 @@ private:
     std::shared_ptr<const Scene> scene_;
     RenderJob job_;
     std::unique_ptr<Integrator> integrator_;
+    PassRenderer* renderer_ = nullptr;
     std::vector<int> passes_;
     int passes_done_ = 0;
     std::vector<Tile> tiles_;

@@ -103,7 +103,7 @@ ctrl_c)
     kill -INT "$job"
     wait "$job"
     cat "$out/log"
-    grep -q "interrupted: wrote the [0-9]* of 108 tiles rendered so far to $out/mpi.partial.png" "$out/log" ||
+    grep -q "interrupted: wrote the [0-9]* of 108 tiles of the first pass to $out/mpi.partial.png" "$out/log" ||
         fail "no partial write"
     head -c 8 "$out/mpi.partial.png" | od -An -c | grep -q "P   N   G" || fail "the partial image is not a PNG"
     [[ "$(cat "$out/mpi.png")" == "good image" ]] || fail "the existing output was replaced"
@@ -132,8 +132,8 @@ killed_rank_resume)
     same_as_reference 2 "$src/scenes/textures.sc" --threads 1 --tile-size 8 --resume "$out/ck" --checkpoint "$out/ck"
     "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/mpi.png" "${SIZE[@]}" --tile-size 8 \
         --resume "$out/ck" >"$out/log" 2>&1 || fail "second resume"
-    grep -Eq "resuming: ([1-9][0-9]*) of 108 tiles" "$out/log" || { cat "$out/log"; fail "nothing resumed"; }
-    grep -q "resuming: 108 of 108" "$out/log" || fail "the resumed run's checkpoint does not hold every tile"
+    grep -Eq "resuming from $out/ck: 1 of 1 whole passes" "$out/log" ||
+        { cat "$out/log"; fail "the resumed run's checkpoint does not hold every tile"; }
     cmp "$out/ref.png" "$out/mpi.png" || fail "resumed twice: differs"
     # A checkpoint of another job is refused.
     "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/other.png" --width 97 --height 72 \
@@ -156,7 +156,7 @@ killed_rank_resume)
     [[ $? == 130 ]] || { cat "$out/log"; fail "whitted --test-interrupt-after-tiles"; }
     "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/mpi.png" "${SIZE[@]}" \
         --resume "$out/ckw" >"$out/log" 2>&1 || { cat "$out/log"; fail "whitted-mpi --resume of whitted's checkpoint"; }
-    grep -q "resuming: 3 of 9 tiles" "$out/log" || { cat "$out/log"; fail "whitted-mpi resumed nothing"; }
+    grep -q "resuming from $out/ckw: 3 of 9 tiles of the first pass" "$out/log" || { cat "$out/log"; fail "whitted-mpi resumed nothing"; }
     cmp "$out/ref.png" "$out/mpi.png" || fail "whitted-mpi resumed whitted's checkpoint: differs" ;;
 scene_error)
     # One error (a colour with two numbers), so that one message per rank would be seen as three.
@@ -257,5 +257,41 @@ timeout)
     grep -q "the time limit of 1.5 s (--timeout) ran out: wrote the [0-9]* of 108 tiles" "$out/log" ||
         fail "no message"
     [[ -e $out/mpi.partial.png && ! -e $out/mpi.png ]] || fail "not written beside the output" ;;
+noise_threshold)
+    # Adaptive sampling: rank 0's session decides which pixels stop between passes; the pixels still
+    # sampling travel with each tile. The same bytes as whitted's.
+    reference "$src/scenes/features/soft_shadows.sc" --spp 32 --noise-threshold 0.05
+    same_as_reference 3 "$src/scenes/features/soft_shadows.sc" --spp 32 --noise-threshold 0.05 --tile-size 16 \
+        --test-schedule-seed 7 ;;
+time_limit)
+    # Whole passes while they fit, then the complete image (exit 0) of the samples reached: the
+    # pixels of a render of that many samples.
+    "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$src/scenes/features/soft_shadows.sc" -o "$out/mpi.png" --width 64 \
+        --height 48 --spp 65536 --time-limit 2 --threads 1 --tile-size 16 >"$out/log" 2>&1 ||
+        { cat "$out/log"; fail "exit code $?"; }
+    grep -q "fitted in the time limit of 2 s (65536 asked for)" "$out/log" || { cat "$out/log"; fail "no message"; }
+    samples=$(sed -n 's/.*: the \([0-9]*\) samples per pixel of \([0-9]*\) whole passes fitted.*/\1/p' "$out/log")
+    [[ -n $samples && $samples -ge 2 ]] || { cat "$out/log"; fail "fewer than two passes in 2 s"; }
+    [[ ! -e $out/mpi.partial.png ]] || fail "a partial image was written"
+    "$WHITTED" "$src/scenes/features/soft_shadows.sc" -o "$out/ref.png" --width 64 --height 48 --spp "$samples" -q ||
+        fail "whitted --spp $samples"
+    "$WHITTED" compare "$out/ref.png" "$out/mpi.png" >"$out/cmp" 2>&1
+    grep -q "the images are equal" "$out/cmp" || { cat "$out/cmp"; fail "not the pixels of --spp $samples"; }
+    echo "ok: $samples samples" ;;
+later_pass_interrupt)
+    # Ctrl-C in the third pass (tiles 1-24 are the first two of 12 tiles each): the partial image is the
+    # last whole pass (2 samples per pixel), not a mix of passes.
+    "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$src/scenes/features/soft_shadows.sc" -o "$out/mpi.png" --width 64 \
+        --height 48 --spp 16 --tile-size 16 --threads 1 --test-interrupt-after-tiles 27 >"$out/log" 2>&1
+    rc=$?
+    [[ $rc == 130 ]] || { cat "$out/log"; fail "exit code $rc, not 130"; }
+    grep -q "interrupted: wrote the 2 samples per pixel of 2 whole passes to $out/mpi.partial.png" "$out/log" ||
+        { cat "$out/log"; fail "not the last whole pass"; }
+    [[ ! -e $out/mpi.png ]] || fail "the output was written"
+    "$WHITTED" "$src/scenes/features/soft_shadows.sc" -o "$out/ref.png" --width 64 --height 48 --spp 2 -q ||
+        fail "whitted --spp 2"
+    "$WHITTED" compare "$out/ref.png" "$out/mpi.partial.png" >"$out/cmp" 2>&1
+    grep -q "the images are equal" "$out/cmp" || { cat "$out/cmp"; fail "not the pixels of --spp 2"; }
+    echo "ok" ;;
 *) fail "unknown case $case_name" ;;
 esac

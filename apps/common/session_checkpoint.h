@@ -1,6 +1,6 @@
 #pragma once
-// whitted's --checkpoint FILE and --resume FILE (session/checkpoint.h, the format and key
-// whitted-mpi uses) around the render session: the key of the job, the refusals, the state a
+// --checkpoint FILE and --resume FILE of whitted and whitted-mpi (session/checkpoint.h) around the
+// render session: the key of the job, the refusals, the state a
 // resume goes on from, and the file kept up to date as tiles and passes finish.
 #include <atomic>
 #include <cstdint>
@@ -24,8 +24,9 @@ class SessionCheckpoint {
 public:
     // Refuses a --checkpoint that is a file the job reads or writes, puts the state of --resume
     // FILE into `session`, starts --checkpoint FILE with it. Returns kExitOk or the code to exit
-    // with (the reason printed).
-    int start(const RenderOptions& o, const LoadResult& loaded, std::uint64_t inputs, Session& session);
+    // with (the reason printed after `program`'s name).
+    int start(const RenderOptions& o, const LoadResult& loaded, std::uint64_t inputs, Session& session,
+              const char* program = "whitted");
     // The tiles resumed (whole passes count every tile), for the progress line.
     int tiles_resumed() const { return tiles_resumed_; }
     // From worker threads: a tile of the pass under way is finished, its pixels in `film`.
@@ -41,6 +42,7 @@ private:
     double every_ = 5;
     int pass_samples_ = 0;  // the samples per pixel of the pass under way
     int tiles_resumed_ = 0;
+    std::string program_ = "whitted";
 };
 
 }  // namespace whitted::cli

@@ -19,8 +19,9 @@ LoadResult load_scene_and_inputs(const RenderOptions& o, const std::atomic<bool>
 }
 
 int SessionCheckpoint::start(const RenderOptions& o, const LoadResult& loaded, std::uint64_t inputs,
-                             Session& session) {
+                             Session& session, const char* program) {
     const RenderSettings& s = o.settings;
+    program_ = program;
     const RenderJob& job = session.job();
     key_ = {checkpoint_settings(s, job.tile_size), inputs, TileGrid{job.width, job.height, job.tile_size}};
     path_ = s.checkpoint;
@@ -32,7 +33,7 @@ int SessionCheckpoint::start(const RenderOptions& o, const LoadResult& loaded, s
             reads.insert(reads.end(), list->begin(), list->end());
         reads.insert(reads.end(), s.texture_dirs.begin(), s.texture_dirs.end());
         if (std::string problem = checkpoint_conflict(path_, o.output, reads); !problem.empty()) {
-            std::cerr << "whitted: error: " << problem << "\n";
+            std::cerr << program_ << ": error: " << problem << "\n";
             return kExitUsage;
         }
     }
@@ -41,14 +42,14 @@ int SessionCheckpoint::start(const RenderOptions& o, const LoadResult& loaded, s
     if (!s.resume.empty()) {
         CheckpointContents contents;
         if (std::string err = read_checkpoint(s.resume, key_, contents, job.cancel); !err.empty()) {
-            std::cerr << "whitted: error: " << err << "\n";
+            std::cerr << program_ << ": error: " << err << "\n";
             return err.rfind("interrupted", 0) == 0 ? kExitInterrupted : kExitUsage;
         }
         resumed = passes_resumed(contents, key_.grid, ends);
         session.resume(resumed.passes, resumed.whole, resumed.next, resumed.next_done);
         tiles_resumed_ = resumed.passes * key_.grid.count() + resumed.next_tiles;
         if (!o.quiet) {
-            std::cerr << "whitted: resuming from " << s.resume << ": ";
+            std::cerr << program_ << ": resuming from " << s.resume << ": ";
             if (resumed.passes > 0)
                 std::cerr << resumed.passes << " of " << ends.size() << " whole passes ("
                           << ends[std::size_t(resumed.passes - 1)] << " samples per pixel)"
@@ -67,7 +68,7 @@ int SessionCheckpoint::start(const RenderOptions& o, const LoadResult& loaded, s
         if (resumed.next_tiles > 0) tiles.push_back({&resumed.next, resumed.next_done, pass_samples_});
     }
     if (std::string err = writer_.open(path_, key_, tiles, every_); !err.empty()) {
-        std::cerr << "whitted: error: " << err << "\n";
+        std::cerr << program_ << ": error: " << err << "\n";
         return kExitIo;
     }
     return kExitOk;
@@ -82,7 +83,7 @@ void SessionCheckpoint::pass_done(const Session& session) {
     if (std::string err = writer_.open(path_, key_, {{&session.film(), {}, session.samples_done()}}, every_);
         !err.empty())
         // The file keeps the passes before (its records of this one are of no use without it).
-        std::cerr << "whitted: warning: " << err << " (it keeps an earlier pass)\n";
+        std::cerr << program_ << ": warning: " << err << " (it keeps an earlier pass)\n";
     if (!session.done()) pass_samples_ = session.pass_ends()[std::size_t(session.passes_done())];
 }
 
