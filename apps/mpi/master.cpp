@@ -275,13 +275,7 @@ RenderStats RankPasses::render(const Integrator& integrator, const RenderJob& pa
             if (mine.empty()) break;
             std::shared_ptr<Share> share = share_of(std::move(mine));
             if (!first) {
-                PixelRegion box = s.grid.tile(share->tiles[0]);
-                for (int t : share->tiles) {
-                    const Tile r = s.grid.tile(t);
-                    box = {std::min(box.x0, r.x0), std::min(box.y0, r.y0), std::max(box.x1, r.x1),
-                           std::max(box.y1, r.y1)};
-                }
-                share->before = Film(s.grid.width, s.grid.height, box);
+                share->before = Film(s.grid.width, s.grid.height, box_of(s.grid, share->tiles));
                 for (int t : share->tiles) share->before.copy_from(*pass_before, s.grid.tile(t));
             }
             if (pass_job.active) share->active = *pass_job.active;

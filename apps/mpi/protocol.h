@@ -10,7 +10,6 @@
 //                    Finish   {int32 exit code}               after the image is written
 // A result names its pass: one that comes in after its pass ended (a tile handed out twice at the
 // tail of a pass) is of no use.
-#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -98,13 +97,8 @@ inline bool unpack_assign(const char* p, const char* end, const TileGrid& grid, 
         share.tiles.push_back(t);
     }
     if (share.tiles.empty()) return true;
-    PixelRegion box = grid.tile(share.tiles[0]);
-    for (int t : share.tiles) {
-        const Tile r = grid.tile(t);
-        box = {std::min(box.x0, r.x0), std::min(box.y0, r.y0), std::max(box.x1, r.x1), std::max(box.y1, r.y1)};
-    }
     if (h.with_pixels) {
-        share.before = Film(grid.width, grid.height, box);
+        share.before = Film(grid.width, grid.height, box_of(grid, share.tiles));
         for (int t : share.tiles)
             if (!read_tile_pixels(p, end, grid.tile(t), share.before)) return false;
     }

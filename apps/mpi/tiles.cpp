@@ -13,14 +13,9 @@ RenderedShare render_share(const Integrator& integrator, const RenderJob& job, c
     RenderedShare out;
     out.pass = share.pass;
     if (tiles.empty()) return out;
-    PixelRegion box = grid.tile(tiles[0]);
     std::vector<Tile> rects;
-    for (int t : tiles) {
-        const Tile r = grid.tile(t);
-        rects.push_back(r);
-        box = {std::min(box.x0, r.x0), std::min(box.y0, r.y0), std::max(box.x1, r.x1), std::max(box.y1, r.y1)};
-    }
-    out.film = Film(grid.width, grid.height, box);
+    for (int t : tiles) rects.push_back(grid.tile(t));
+    out.film = Film(grid.width, grid.height, box_of(grid, tiles));
     // Each tile goes on from the samples it had (the session adds a pass's samples in order).
     if (share.sample_begin > 0)
         for (const Tile& r : rects) out.film.copy_from(share.before, r);
@@ -41,6 +36,15 @@ RenderedShare render_share(const Integrator& integrator, const RenderJob& job, c
     if (rank == knobs.corrupt_rank)
         for (int t : out.tiles) out.film.at(grid.tile(t).x0, grid.tile(t).y0).sum.x += 1e-3f;
     return out;
+}
+
+PixelRegion box_of(const TileGrid& grid, const std::vector<int>& tiles) {
+    PixelRegion box = grid.tile(tiles[0]);
+    for (int t : tiles) {
+        const Tile r = grid.tile(t);
+        box = {std::min(box.x0, r.x0), std::min(box.y0, r.y0), std::max(box.x1, r.x1), std::max(box.y1, r.y1)};
+    }
+    return box;
 }
 
 bool same_pixels(const Film& a, const Film& b, const Tile& t) {

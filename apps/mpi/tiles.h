@@ -45,6 +45,9 @@ struct TestKnobs {
 RenderedShare render_share(const Integrator& integrator, const RenderJob& job, const TileGrid& grid,
                            const Share& share, const std::vector<int>& tiles, int rank, const TestKnobs& knobs);
 
+// The smallest region holding every tile of `tiles` (not empty).
+PixelRegion box_of(const TileGrid& grid, const std::vector<int>& tiles);
+
 // True when tile t holds the same bytes in both films.
 bool same_pixels(const Film& a, const Film& b, const Tile& t);
 
