@@ -9,8 +9,10 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <new>
+#include <set>
 #include <string>
 #include <thread>
 #include <tuple>
@@ -93,6 +95,38 @@ private:
     std::thread watch_;  // last: started once the members it uses are made
 };
 
+std::string fmt_seconds(double s);
+
+// A scene being graded: loaded with --untrusted's limits under its own time limit (its load and
+// every render of it share it), its first error, and its references rendered so far (one per size,
+// and per kind: an 8-bit file's reference is rounded as its bytes are).
+struct GradedScene {
+    GradedScene(const std::string& scene_path, const RenderOptions& o)
+        : path(scene_path), cancel(timeout_seconds(o.settings)),
+          time_out("the time limit of " + fmt_seconds(timeout_seconds(o.settings)) +
+                   " s (--timeout) ran out rendering this scene") {
+        RenderOptions lo = o;
+        lo.scene_path = path;
+        loaded = load_scene(path, load_options(lo, cancel.flag()));
+        if (cancel.timed_out()) {
+            problem = time_out;
+        } else if (!loaded.ok() && !interrupt_flag().load()) {
+            for (const Diagnostic& d : loaded.diagnostics)
+                if (d.severity == Severity::Error) {
+                    problem = d.str();
+                    break;
+                }
+            if (problem.empty()) problem = path + ": error: the scene could not be loaded";
+        }
+    }
+    std::string path;
+    SceneCancel cancel;
+    std::string time_out;
+    LoadResult loaded;
+    std::string problem;  // the load's first error, or the time limit
+    std::map<std::tuple<int, int, bool>, LinearImage> references;
+};
+
 bool write_thumbnail(const Image& image, const std::string& dir, const std::string& name) {
     if (std::string problem = write_image(image, (fs::path(dir) / name).string()); !problem.empty()) {
         std::cerr << kProgram << ": error: " << problem << "\n";
@@ -116,7 +150,8 @@ bool write_text(const std::string& path, const std::string& text) {
 int run(int argc, char** argv) {
     CLI::App app{"whitted grade: a class's images against whitted's renders of the reference scenes. SCENES_DIR holds "
                  "the scenes (NAME.sc); SUBMISSIONS_DIR one folder per student holding NAME.png (any format whitted "
-                 "reads: NAME.png, .ppm, .bmp, .jpg, .exr, .pfm). Each scene is loaded with --untrusted's limits and "
+                 "reads: NAME.png, .ppm, .bmp, .jpg, .exr, .pfm), and optionally the student's own NAME.sc, which their "
+                 "image of that name is then graded against. Each scene is loaded with --untrusted's limits and "
                  "rendered once per size submitted. Writes REPORT_DIR/index.html (a static page: no script, no "
                  "network), report.csv and report.json. docs/compare.md has a worked example.",
                  "whitted grade"};
@@ -188,40 +223,58 @@ int run(int argc, char** argv) {
     }
     install_interrupt_handler();
     GradeReport report;
+    // Students' own scene files: NAME.sc beside their NAME.png. A class scene's name: their image is
+    // of their scene, which the reference is rendered from; any other name: a row of its own.
+    std::map<std::string, std::set<std::string>> own;  // by student
+    std::vector<std::string> own_rows;
+    for (const std::string& student : students)
+        for (const fs::directory_entry& e : fs::directory_iterator(fs::path(submissions_dir) / student, ec))
+            if (e.is_regular_file() && e.path().extension() == ".sc") {
+                const std::string name = e.path().stem().string();
+                own[student].insert(name);
+                if (std::none_of(scenes.begin(), scenes.end(), [&](const SceneEntry& s) { return s.name == name; }) &&
+                    std::find(own_rows.begin(), own_rows.end(), name) == own_rows.end())
+                    own_rows.push_back(name);
+            }
+    std::sort(own_rows.begin(), own_rows.end());
     for (const SceneEntry& s : scenes) report.scenes.push_back(s.name);
+    for (const std::string& name : own_rows) {
+        report.scenes.push_back(name);
+        scenes.push_back({name, ""});  // no class scene
+    }
     report.students = students;
     const char* kFormats[] = {".png", ".ppm", ".bmp", ".jpg", ".jpeg", ".tga", ".exr", ".pfm"};
-    const std::string time_out = "the time limit of " + fmt_seconds(timeout_seconds(o.settings)) +
-                                 " s (--timeout) ran out rendering this scene";
     for (const SceneEntry& s : scenes) {
-        // One scene at a time: its load and every render of it share its time limit.
-        SceneCancel cancel(timeout_seconds(o.settings));
-        RenderOptions lo = o;
-        lo.scene_path = s.path;
-        const LoadResult loaded = load_scene(s.path, load_options(lo, cancel.flag()));
-        std::string scene_problem;  // the load's first error, or the time limit
-        if (cancel.timed_out()) {
-            scene_problem = time_out;
-        } else if (!loaded.ok() && !interrupt_flag().load()) {
-            for (const Diagnostic& d : loaded.diagnostics)
-                if (d.severity == Severity::Error) {
-                    scene_problem = d.str();
-                    break;
-                }
-            if (scene_problem.empty()) scene_problem = s.path + ": error: the scene could not be loaded";
-        }
-        // Rendered once per size (and per kind: an 8-bit file's reference is rounded as its bytes are).
-        std::map<std::tuple<int, int, bool>, LinearImage> references;
+        // The class's scene, loaded once for its row when a student needs it: its load and every
+        // render of it share its time limit.
+        std::unique_ptr<GradedScene> class_scene;
         for (const std::string& student : students) {
             if (interrupt_flag().load()) {
                 std::cerr << kProgram << ": interrupted\n";
                 return kExitInterrupted;
             }
-            if (cancel.timed_out()) scene_problem = time_out;
             const std::size_t index = report.cells.size();
             GradeCell c;
             c.scene = s.name;
             c.student = student;
+            // A student's own scene is loaded as any file from others is (--untrusted: files only
+            // from their folder), with a time limit of its own.
+            std::unique_ptr<GradedScene> own_scene;
+            GradedScene* scene = nullptr;
+            if (own[student].count(s.name)) {
+                c.scene_file = s.name + ".sc";
+                own_scene = std::make_unique<GradedScene>(
+                    (fs::path(submissions_dir) / student / c.scene_file).string(), o);
+                scene = own_scene.get();
+            } else if (!s.path.empty()) {
+                if (!class_scene) class_scene = std::make_unique<GradedScene>(s.path, o);
+                scene = class_scene.get();
+            } else {
+                c.status = CellStatus::not_theirs;
+                report.cells.push_back(std::move(c));
+                continue;
+            }
+            if (scene->cancel.timed_out()) scene->problem = scene->time_out;
             std::string image_path;
             for (const char* ext : kFormats) {
                 const fs::path p = fs::path(submissions_dir) / student / (s.name + ext);
@@ -237,9 +290,9 @@ int run(int argc, char** argv) {
             } else if (std::string problem = read_compare_image(image_path, image); !problem.empty()) {
                 c.status = CellStatus::unreadable;
                 c.problem = problem;
-            } else if (!scene_problem.empty()) {
-                c.status = cancel.timed_out() ? CellStatus::timed_out : CellStatus::scene_error;
-                c.problem = scene_problem;
+            } else if (!scene->problem.empty()) {
+                c.status = scene->cancel.timed_out() ? CellStatus::timed_out : CellStatus::scene_error;
+                c.problem = scene->problem;
             }
             if (!image_path.empty() && c.problem.empty()) {
                 c.image_file = file_name(index, "image");
@@ -257,7 +310,7 @@ int run(int argc, char** argv) {
                 continue;
             }
             RenderOptions so = o;
-            so.scene_path = s.path;
+            so.scene_path = scene->path;
             so.settings.width = image.pixels.width;
             so.settings.height = image.pixels.height;
             so.settings.given.insert("width");
@@ -268,20 +321,20 @@ int run(int argc, char** argv) {
                 report.cells.push_back(std::move(c));
                 continue;
             }
-            RenderJob job = render_job(so, cancel.flag());
+            RenderJob job = render_job(so, scene->cancel.flag());
             const auto size = std::make_tuple(image.pixels.width, image.pixels.height, image.linear);
-            auto it = references.find(size);
-            if (it == references.end()) {
-                LinearImage rendered = render_variant(*loaded.scene, job, nullptr, !image.linear);
-                if (cancel.flag()->load()) {  // stopped part way: not a reference
+            auto it = scene->references.find(size);
+            if (it == scene->references.end()) {
+                LinearImage rendered = render_variant(*scene->loaded.scene, job, nullptr, !image.linear);
+                if (scene->cancel.flag()->load()) {  // stopped part way: not a reference
                     if (interrupt_flag().load()) continue;  // said at the top of the loop
-                    scene_problem = time_out;
+                    scene->problem = scene->time_out;
                     c.status = CellStatus::timed_out;
-                    c.problem = time_out;
+                    c.problem = scene->time_out;
                     report.cells.push_back(std::move(c));
                     continue;
                 }
-                it = references.emplace(size, std::move(rendered)).first;
+                it = scene->references.emplace(size, std::move(rendered)).first;
             }
             const LinearImage& reference = it->second;
             c.reference_file = file_name(index, "reference");
@@ -300,9 +353,9 @@ int run(int argc, char** argv) {
             if (explain == "all" || (explain == "failing" && r.verdict == Verdict::fail)) {
                 ExplainOptions x = eo;
                 x.quantize = !image.linear;
-                x.cancel = cancel.flag();
-                const Explanation e = explain_image(*loaded.scene, job, image.pixels, x);
-                c.explanation = e.cancelled || cancel.flag()->load()
+                x.cancel = scene->cancel.flag();
+                const Explanation e = explain_image(*scene->loaded.scene, job, image.pixels, x);
+                c.explanation = e.cancelled || scene->cancel.flag()->load()
                                     ? std::string("not explained: the scene's time limit ran out")
                                     : explain_summary(e);
             }

@@ -41,6 +41,7 @@ std::string url_path(const std::string& s) {
 }
 
 const char* css_class(const GradeCell& c) {
+    if (c.status == CellStatus::not_theirs) return "none";
     if (c.status != CellStatus::compared) return "bad";
     return c.verdict == Verdict::pass ? "pass" : c.verdict == Verdict::warn ? "warn" : "fail";
 }
@@ -61,13 +62,16 @@ std::string cell_result(const GradeCell& c) {
         case CellStatus::unreadable: return "unreadable";
         case CellStatus::scene_error: return "scene error";
         case CellStatus::timed_out: return "time limit";
+        case CellStatus::not_theirs: return "";
     }
     return "fail";
 }
 
 int grade_exit_code(const GradeReport& r) {
     int code = 0;
-    for (const GradeCell& c : r.cells) code = std::max(code, c.status == CellStatus::compared ? int(c.verdict) : 2);
+    for (const GradeCell& c : r.cells)
+        if (c.status != CellStatus::not_theirs)
+            code = std::max(code, c.status == CellStatus::compared ? int(c.verdict) : 2);
     return code;
 }
 
@@ -110,7 +114,13 @@ std::string grade_html(const GradeReport& r) {
             const GradeCell& c = r.cells[i * r.students.size() + j];
             s += "<td class=\"" + std::string(css_class(c)) + "\">";
             s += img(c.image_file, "submitted") + img(c.reference_file, "reference") + img(c.error_file, "error");
+            if (c.status == CellStatus::not_theirs) {
+                s += "</td>";
+                continue;
+            }
             s += "<div class=\"result\">" + html_escape(cell_result(c)) + "</div>";
+            if (!c.scene_file.empty())
+                s += "<div class=\"words\">rendered from the student's " + html_escape(c.scene_file) + "</div>";
             if (c.status == CellStatus::compared)
                 s += "<div>PSNR " + psnr_text(c.psnr) + " &middot; FLIP " + fmt("%.4f", c.flip_mean) +
                      " &middot; SSIM min " + fmt("%.4f", c.ssim_worst) + "</div>";
@@ -125,12 +135,14 @@ std::string grade_html(const GradeReport& r) {
 }
 
 std::string grade_csv(const GradeReport& r) {
-    std::string s = "scene,student,result,psnr,flip_mean,ssim_worst,explanation,problem\n";
+    std::string s = "scene,student,result,psnr,flip_mean,ssim_worst,explanation,problem,scene_file\n";
     for (const GradeCell& c : r.cells) {
+        if (c.status == CellStatus::not_theirs) continue;
         const bool m = c.status == CellStatus::compared;
         s += csv_field(c.scene) + "," + csv_field(c.student) + "," + csv_field(cell_result(c)) + "," +
              (m ? psnr_text(c.psnr) : "") + "," + (m ? fmt("%.6g", c.flip_mean) : "") + "," +
-             (m ? fmt("%.6g", c.ssim_worst) : "") + "," + csv_field(c.explanation) + "," + csv_field(c.problem) + "\n";
+             (m ? fmt("%.6g", c.ssim_worst) : "") + "," + csv_field(c.explanation) + "," + csv_field(c.problem) + "," +
+             csv_field(c.scene_file) + "\n";
     }
     return s;
 }
@@ -147,15 +159,17 @@ std::string grade_json(const GradeReport& r) {
         s += json_string(r.students[i]);
     }
     s += "],\"cells\":[";
-    for (std::size_t i = 0; i < r.cells.size(); ++i) {
-        const GradeCell& c = r.cells[i];
+    bool first = true;
+    for (const GradeCell& c : r.cells) {
+        if (c.status == CellStatus::not_theirs) continue;
         const bool m = c.status == CellStatus::compared;
-        s += std::string(i ? "," : "") + "\n{\"scene\":" + json_string(c.scene) + ",\"student\":" +
+        s += std::string(first ? "" : ",") + "\n{\"scene\":" + json_string(c.scene) + ",\"student\":" +
              json_string(c.student) + ",\"result\":" + json_string(cell_result(c)) +
              ",\"psnr\":" + (m ? jnum(c.psnr) : "null") + ",\"flip_mean\":" + (m ? jnum(c.flip_mean) : "null") +
              ",\"ssim_worst\":" + (m ? jnum(c.ssim_worst) : "null") + ",\"explanation\":" + json_string(c.explanation) +
              ",\"problem\":" + json_string(c.problem) + ",\"image\":" + json_string(c.image_file) +
-             ",\"reference\":" + json_string(c.reference_file) + ",\"error_image\":" + json_string(c.error_file) + "}";
+             ",\"reference\":" + json_string(c.reference_file) + ",\"error_image\":" + json_string(c.error_file) + ",\"scene_file\":" + json_string(c.scene_file) + "}";
+        first = false;
     }
     return s + "\n]}\n";
 }

@@ -10,7 +10,8 @@
 
 namespace whitted {
 
-enum class CellStatus { compared, missing, wrong_size, unreadable, scene_error, timed_out };
+// not_theirs: a row of another student's own scene (nothing asked of this student: not counted).
+enum class CellStatus { compared, missing, wrong_size, unreadable, scene_error, timed_out, not_theirs };
 
 struct GradeCell {
     std::string scene, student;
@@ -19,6 +20,8 @@ struct GradeCell {
     Verdict verdict = Verdict::fail;  // compared: the compare thresholds' verdict
     double psnr = 0.0, flip_mean = 0.0, ssim_worst = 1.0;
     std::string explanation;  // explain's one line, or "" when not explained
+    // The student's own scene file the reference was rendered from ("" = the class's scene).
+    std::string scene_file;
     // Files in the report's folder (relative names), or "".
     std::string image_file, reference_file, error_file;
 };
@@ -29,11 +32,12 @@ struct GradeReport {
 };
 
 // "pass", "warn", "fail" for a compared cell; "missing", "wrong size", "unreadable", "scene error",
-// "time limit".
+// "time limit"; "" for a row that is not the student's.
 std::string cell_result(const GradeCell& c);
 
 // 0 when every cell passes, 1 when the worst is a warning, 2 when any cell fails or has nothing to
-// compare (missing, wrong size, unreadable, a scene that would not load or ran out of time).
+// compare (missing, wrong size, unreadable, a scene that would not load or ran out of time). Rows
+// of another student's own scene do not count.
 int grade_exit_code(const GradeReport& r);
 
 // `s` with & < > " ' as HTML entities.

@@ -125,10 +125,11 @@ TEST_F(CliGrade, AClassOfTwoScenesAndThreeStudents) {
 
     // The CSV: a header and a row per cell, rows in scene order, students in name order.
     const std::string csv = slurp(out + "/report.csv");
-    EXPECT_EQ(csv.rfind("scene,student,result,psnr,flip_mean,ssim_worst,explanation,problem\n", 0), 0u) << csv;
+    EXPECT_EQ(csv.rfind("scene,student,result,psnr,flip_mean,ssim_worst,explanation,problem,scene_file\n", 0), 0u)
+        << csv;
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7);
     EXPECT_NE(csv.find("\nmirror,alice,pass,inf,0,"), std::string::npos) << csv;
-    EXPECT_NE(csv.find("\nmirror,carol,missing,,,,,no mirror.png\n"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\nmirror,carol,missing,,,,,no mirror.png,\n"), std::string::npos) << csv;
     EXPECT_NE(csv.find("\nshapes,bob,fail,"), std::string::npos) << csv;
 }
 
@@ -171,6 +172,62 @@ TEST_F(CliGrade, WrongSizeAndABrokenSceneAreReportedInTheirCells) {
     const Json k = Json::parse(slurp(out + "/report.json"));
     EXPECT_EQ((*cell(k, "shapes", "alice"))["result"].string, "wrong size");
     EXPECT_EQ((*cell(k, "shapes", "alice"))["problem"].string, "10x8, not 48x36");
+}
+
+// A student's own scene file beside their image: under a class scene's name, the reference is
+// rendered from it (their image is of their scene); under a new name, it is a row of its own, with
+// nothing asked of the other students. Loaded as --untrusted loads: files only from their folder.
+TEST_F(CliGrade, StudentsOwnScenesAreRenderedForTheirOwnImages) {
+    render("mirror", "alice");
+    render("shapes", "alice");
+    // dave's mirror.sc is the shapes scene: his image of it passes only against a render of it.
+    fs::create_directories(subs + "/dave");
+    fs::copy_file(scenes + "/shapes.sc", subs + "/dave/mirror.sc");
+    auto made = whitted({subs + "/dave/mirror.sc", "-q", "--width", "48", "--height", "36", "-o",
+                         subs + "/dave/mirror.png"});
+    ASSERT_EQ(made.exit_code, 0) << made.output;
+    render("shapes", "dave");
+    // And a scene of his own, with its image.
+    fs::copy_file(test::source_dir() + "/scenes/features/soft_shadows.sc", subs + "/dave/lamp.sc");
+    made = whitted({subs + "/dave/lamp.sc", "-q", "--width", "48", "--height", "36", "-o", subs + "/dave/lamp.png"});
+    ASSERT_EQ(made.exit_code, 0) << made.output;
+    // A scene of erin's that reads a texture outside her folder: refused, as --untrusted refuses it.
+    fs::create_directories(subs + "/erin");
+    fs::create_directories(dir + "/outside");
+    ASSERT_EQ(write_image(solid(4, 4, 200, 10, 10), dir + "/outside/t.png"), "");
+    test::write_file(subs + "/erin", "wall.sc",
+                     "camera [ eye 0 0 5 ]\nlight [ type point position 0 0 5 ]\nmastersubgraph root [ trans [\n"
+                     "  object sphere [ diffuse 1 1 1 texture ../../outside/t.png 1 1 ]\n] ]\n");
+    ASSERT_EQ(write_image(solid(48, 36, 9, 9, 9), subs + "/erin/wall.png"), "");
+
+    const auto r = whitted({"grade", scenes, subs, "-o", out, "--explain", "none"});
+    const Json j = Json::parse(slurp(out + "/report.json"));
+    const Json* mine = cell(j, "mirror", "dave");
+    ASSERT_TRUE(mine);
+    EXPECT_EQ((*mine)["result"].string, "pass") << "the reference is his scene's";
+    EXPECT_EQ((*mine)["scene_file"].string, "mirror.sc");
+    EXPECT_EQ((*cell(j, "shapes", "dave"))["scene_file"].string, "");  // the class's scene
+    EXPECT_EQ((*cell(j, "mirror", "alice"))["result"].string, "pass");
+    const Json* lamp = cell(j, "lamp", "dave");
+    ASSERT_TRUE(lamp);
+    EXPECT_EQ((*lamp)["result"].string, "pass");
+    EXPECT_EQ(cell(j, "lamp", "alice"), nullptr) << "no cell of another student's own scene";
+    const Json* wall = cell(j, "wall", "erin");
+    ASSERT_TRUE(wall);
+    EXPECT_EQ((*wall)["result"].string, "scene error");
+    EXPECT_NE((*wall)["problem"].string.find("not found inside the scene's folder"), std::string::npos)
+        << (*wall)["problem"].string;
+    // erin misses both class scenes and her own scene fails: 2; the rows of others' scenes count for nobody.
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    std::vector<std::string> rows;
+    for (const Json& s : j["scenes"].array) rows.push_back(s.string);
+    EXPECT_EQ(rows, (std::vector<std::string>{"mirror", "shapes", "lamp", "wall"}));
+    const std::string html = slurp(out + "/index.html");
+    EXPECT_NE(html.find("rendered from the student's mirror.sc"), std::string::npos);
+
+    // Without erin, every image of the class passes against its own reference: 0.
+    fs::remove_all(subs + "/erin");
+    EXPECT_EQ(whitted({"grade", scenes, subs, "-o", out, "--explain", "none"}).exit_code, 0);
 }
 
 TEST_F(CliGrade, BadUsageExitsFiveAndWritesNothing) {

@@ -53,10 +53,11 @@ TEST(GradeReport, CsvQuotesFieldsWithCommasAndQuotes) {
     c.student = "x\"y";
     c.status = CellStatus::missing;
     c.problem = "no a,b.png";
+    c.scene_file = "a,b.sc";
     r.cells = {c};
     EXPECT_EQ(grade_csv(r),
-              "scene,student,result,psnr,flip_mean,ssim_worst,explanation,problem\n"
-              "\"a,b\",\"x\"\"y\",missing,,,,,\"no a,b.png\"\n");
+              "scene,student,result,psnr,flip_mean,ssim_worst,explanation,problem,scene_file\n"
+              "\"a,b\",\"x\"\"y\",missing,,,,,\"no a,b.png\",\"a,b.sc\"\n");
 }
 
 TEST(GradeReport, ExitCodeIsTheWorstCell) {
