@@ -43,8 +43,10 @@ std::vector<double> solve(std::vector<double> m, std::vector<double> b, std::siz
     return x;
 }
 
+// The worst regions, and in `masks` each one's differing pixels (the image's size).
 std::vector<Region> find_regions(const LinearImage& image, const LinearImage& reference,
-                                 const std::vector<std::uint8_t>& mask, int block, int max_regions) {
+                                 const std::vector<std::uint8_t>& mask, int block, int max_regions,
+                                 std::vector<std::vector<std::uint8_t>>& masks) {
     const int w = image.width, h = image.height;
     const int bw = (w + block - 1) / block, bh = (h + block - 1) / block;
     std::vector<std::uint8_t> bad(std::size_t(bw) * bh, 0);
@@ -110,7 +112,15 @@ std::vector<Region> find_regions(const LinearImage& image, const LinearImage& re
     }
     std::stable_sort(found.begin(), found.end(), [](const Found& a, const Found& b) { return a.total > b.total; });
     std::vector<Region> out;
-    for (std::size_t i = 0; i < found.size() && int(i) < max_regions; ++i) out.push_back(found[i].r);
+    masks.clear();
+    for (std::size_t i = 0; i < found.size() && int(i) < max_regions; ++i) {
+        out.push_back(found[i].r);
+        std::vector<std::uint8_t>& m = masks.emplace_back(mask.size(), 0);
+        for (int b : found[i].blocks)
+            for (int y = (b / bw) * block; y < std::min(h, (b / bw + 1) * block); ++y)
+                for (int x = (b % bw) * block; x < std::min(w, (b % bw + 1) * block); ++x)
+                    m[std::size_t(y) * w + x] = mask[std::size_t(y) * w + x];
+    }
     return out;
 }
 
@@ -118,6 +128,14 @@ std::vector<Region> find_regions(const LinearImage& image, const LinearImage& re
 
 std::vector<double> fit_terms(const LinearImage& image, const LinearImage& reference,
                               const std::vector<LinearImage>& removals, const std::vector<std::uint8_t>& mask,
+                              double& explained, std::vector<double>* shares) {
+    std::vector<const LinearImage*> each;
+    for (const LinearImage& r : removals) each.push_back(&r);
+    return fit_terms(image, reference, each, mask, explained, shares);
+}
+
+std::vector<double> fit_terms(const LinearImage& image, const LinearImage& reference,
+                              const std::vector<const LinearImage*>& removals, const std::vector<std::uint8_t>& mask,
                               double& explained, std::vector<double>* shares) {
     const std::size_t n = removals.size();
     std::vector<double> m(n * n, 0.0), b(n, 0.0), t(n);
@@ -127,7 +145,7 @@ std::vector<double> fit_terms(const LinearImage& image, const LinearImage& refer
         for (int c = 0; c < 3; ++c) {
             const double d = double(image.rgb[i][c]) - double(reference.rgb[i][c]);
             if (!std::isfinite(d)) continue;  // a NaN or infinite pixel is no colour to fit
-            for (std::size_t k = 0; k < n; ++k) t[k] = double(reference.rgb[i][c]) - double(removals[k].rgb[i][c]);
+            for (std::size_t k = 0; k < n; ++k) t[k] = double(reference.rgb[i][c]) - double(removals[k]->rgb[i][c]);
             for (std::size_t j = 0; j < n; ++j) {
                 b[j] += t[j] * d;
                 for (std::size_t k = 0; k < n; ++k) m[j * n + k] += t[j] * t[k];
@@ -193,15 +211,32 @@ Explanation explain_image(const Scene& scene, const RenderJob& job, const Linear
     for (const VariantMatch& m : e.variants)
         if (m.changes_scene && m.psnr >= e.psnr + options.better_db) e.matches.push_back(m);
 
-    if (!removals.empty()) {
+    // The terms fitted over `where`'s pixels, largest share first (those with no image there left out).
+    auto fit = [&](const std::vector<std::uint8_t>& where, double& explained) {
+        std::vector<const LinearImage*> here;
+        std::vector<Variant> here_variants;
+        for (std::size_t k = 0; k < removals.size(); ++k) {
+            bool seen = false;
+            for (std::size_t i = 0; i < where.size() && !seen; ++i)
+                seen = where[i] && removals[k].rgb[i] != reference.rgb[i];
+            if (!seen) continue;
+            here.push_back(&removals[k]);
+            here_variants.push_back(removal_variants[k]);
+        }
+        std::vector<TermFit> terms;
+        explained = 0.0;
+        if (here.empty()) return terms;
         std::vector<double> shares;
-        const std::vector<double> c = fit_terms(image, reference, removals, mask, e.explained, &shares);
-        for (std::size_t k = 0; k < c.size(); ++k) e.terms.push_back(TermFit{removal_variants[k], c[k], shares[k]});
-        std::stable_sort(e.terms.begin(), e.terms.end(),
-                         [](const TermFit& a, const TermFit& b) { return a.share > b.share; });
-    }
+        const std::vector<double> c = fit_terms(image, reference, here, where, explained, &shares);
+        for (std::size_t k = 0; k < c.size(); ++k) terms.push_back(TermFit{here_variants[k], c[k], shares[k]});
+        std::stable_sort(terms.begin(), terms.end(), [](const TermFit& a, const TermFit& b) { return a.share > b.share; });
+        return terms;
+    };
+    e.terms = fit(mask, e.explained);
 
-    e.regions = find_regions(image, reference, mask, options.block, options.max_regions);
+    std::vector<std::vector<std::uint8_t>> region_masks;
+    e.regions = find_regions(image, reference, mask, options.block, options.max_regions, region_masks);
+    for (std::size_t i = 0; i < e.regions.size(); ++i) e.regions[i].terms = fit(region_masks[i], e.regions[i].explained);
     for (Region& r : e.regions) {
         r.inspection = inspect_pixel(scene, job, r.x, r.y, options.cancel);
         if (r.inspection.cancelled) e.cancelled = true;

@@ -4,7 +4,8 @@
 //     those it matches far better than the reference are named;
 //   which term: the difference, over the pixels that differ, fitted by least squares as a sum of
 //     the terms' images (reference minus the render without the term): "0.02 × the reference's
-//     specular term" says the highlights are missing;
+//     specular term" says the highlights are missing; over the whole image and over each region
+//     (one mistake may be in the mirror and another in the shadows);
 //   where: the worst regions (connected 8×8 blocks holding differing pixels), each with the pixel
 //     inspector's account of its centre pixel in the reference.
 #include <atomic>
@@ -54,6 +55,8 @@ struct Region {
     int x = 0, y = 0;                     // its centre pixel: the differing pixel nearest its error-weighted centre
     glm::vec3 image{0.0f}, reference{0.0f};  // there
     PixelReport inspection;               // the reference's pixel (x, y)
+    std::vector<TermFit> terms;           // the fit over this region's differing pixels, largest share first
+    double explained = 0.0;               // its R²
 };
 
 struct Explanation {
@@ -79,6 +82,9 @@ Explanation explain_image(const Scene& scene, const RenderJob& job, const Linear
 // `shares`, if given, each term's share as TermFit::share.
 std::vector<double> fit_terms(const LinearImage& image, const LinearImage& reference,
                               const std::vector<LinearImage>& removals, const std::vector<std::uint8_t>& mask,
+                              double& explained, std::vector<double>* shares = nullptr);
+std::vector<double> fit_terms(const LinearImage& image, const LinearImage& reference,
+                              const std::vector<const LinearImage*>& removals, const std::vector<std::uint8_t>& mask,
                               double& explained, std::vector<double>* shares = nullptr);
 
 }  // namespace whitted

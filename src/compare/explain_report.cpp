@@ -90,6 +90,19 @@ std::string term_words(const TermFit& fit) {
     return t + " is " + how;
 }
 
+std::string region_fit_words(const Region& g) {
+    if (g.terms.empty()) return "no term of the reference shows in these pixels";
+    if (g.explained < kFitExplains)
+        return "the terms explain " + fmt("%.0f%%", 100.0 * g.explained) + " of the difference: another kind of mistake";
+    std::string s;
+    for (const TermFit& t : g.terms)
+        if (const std::string words = term_words(t); !words.empty() && t.share >= kTermShare)
+            s += (s.empty() ? "" : "; ") + words + " (" + fmt("%.2f", t.coefficient) + " x the reference's " +
+                 t.variant.term + ")";
+    return (s.empty() ? "no single term is off by 10% or more" : s) + " (the fit explains " +
+           fmt("%.0f%%", 100.0 * g.explained) + ")";
+}
+
 std::string explain_summary(const Explanation& e) {
     if (!e.differs()) return "no difference";
     std::string s;
@@ -173,6 +186,7 @@ std::string explain_text(const ExplainInputs& in, const ExplainOptions& o, const
         s += "     reference's parts: " + parts_words(g.inspection) + "\n";
         s += "     " + lights_words(g.inspection) + " (whitted " + in.scene_path + " --inspect " + std::to_string(g.x) +
              "," + std::to_string(g.y) + " for all of it)\n";
+        s += "     here: " + region_fit_words(g) + "\n";
     }
     if (e.cancelled) s += "interrupted: the explanation is incomplete\n";
     return s + verdict_name(r.verdict) + "\n";
@@ -200,11 +214,12 @@ std::string explain_json(const ExplainInputs& in, const ExplainOptions& o, const
     };
     s += ", \"matches\": " + list(e.matches, variant);
     s += ", \"variants\": " + list(e.variants, variant);
-    s += ", \"terms\": " + list(e.terms, [](const TermFit& t) {
-             return "{\"name\": " + json_string(t.variant.name) + ", \"term\": " + json_string(t.variant.term) +
-                    ", \"coefficient\": " + jnum(t.coefficient) + ", \"share\": " + jnum(t.share) +
-                    ", \"words\": " + json_string(term_words(t)) + "}";
-         });
+    auto term_json = [](const TermFit& t) {
+        return "{\"name\": " + json_string(t.variant.name) + ", \"term\": " + json_string(t.variant.term) +
+               ", \"coefficient\": " + jnum(t.coefficient) + ", \"share\": " + jnum(t.share) +
+               ", \"words\": " + json_string(term_words(t)) + "}";
+    };
+    s += ", \"terms\": " + list(e.terms, term_json);
     s += ", \"explained\": " + jnum(e.explained);
     s += ", \"regions\": " + list(e.regions, [&](const Region& g) {
              const PixelReport& r = g.inspection;
@@ -212,7 +227,9 @@ std::string explain_json(const ExplainInputs& in, const ExplainOptions& o, const
                              ", \"x1\": " + std::to_string(g.x1) + ", \"y1\": " + std::to_string(g.y1) +
                              ", \"pixels\": " + std::to_string(g.pixels) + ", \"mean_error\": " + jnum(g.mean_error) +
                              ", \"x\": " + std::to_string(g.x) + ", \"y\": " + std::to_string(g.y) +
-                             ", \"image\": " + jvec(g.image) + ", \"reference\": " + jvec(g.reference);
+                             ", \"image\": " + jvec(g.image) + ", \"reference\": " + jvec(g.reference) +
+                             ", \"explained\": " + jnum(g.explained) + ", \"terms\": " + list(g.terms, term_json) +
+                             ", \"words\": " + json_string(region_fit_words(g));
              j += ", \"object\": " + json_string(object_words(r, in.base_dir));
              if (r.decomposed) {
                  const ColourParts& p = r.parts;

@@ -17,6 +17,10 @@ struct ExplainInputs {
 // the term as the reference has it (within 10%).
 std::string term_words(const TermFit& fit);
 
+// The fit over one region in words: the terms that are off there, with their coefficients, and how
+// much of the region's difference the fit explains (or that no mix of the terms makes it).
+std::string region_fit_words(const Region& g);
+
 // The explanation in one line, as a grading table shows it: the best-matching named mistake ("looks
 // like: the image upside down (47.0 dB against 19.0 dB as is)") and the term the fit names first ("the
 // specular highlights are missing"); "no difference" for a PASS, "no named mistake or term" when

@@ -30,12 +30,24 @@ mastersubgraph root [
 ]
 )";
 
+// A plastic sphere on the left and a mirror sphere on the right, far apart over a floor: each
+// mistake below changes one of them only.
+constexpr const char* kTwoSpheresScene = R"(camera [ eye 0 1 9 focus 0 0 0 up 0 1 0 angle 45 ]
+light [ position 0 6 6 color 1 1 1 ]
+mastersubgraph root [
+  trans [ translate 0 -1.5 0 scale 20 0.2 20 object cube [ diffuse 0.3 0.6 0.3 ] ]
+  trans [ translate -2.6 0 0 object sphere [ diffuse 0.6 0.2 0.2 specular 1 1 1 shine 30 ] ]
+  trans [ translate 2.6 0 0 object sphere [ diffuse 0.05 0.05 0.05 specular 0.4 0.4 0.4 shine 8 reflect 0.5 0.5 0.5 ] ]
+]
+)";
+
 std::shared_ptr<const Scene> load(const std::string& name) {
     static std::map<std::string, std::shared_ptr<const Scene>> cache;
     auto& s = cache[name];
     if (!s) {
-        LoadResult r = name == "(beyond)" ? load_scene_text(kBeyondScene, "beyond.sc")
-                                          : load_scene(std::string(WHITTED_SCENES_DIR) + "/" + name);
+        LoadResult r = name == "(beyond)"        ? load_scene_text(kBeyondScene, "beyond.sc")
+                       : name == "(two spheres)" ? load_scene_text(kTwoSpheresScene, "two.sc")
+                                                 : load_scene(std::string(WHITTED_SCENES_DIR) + "/" + name);
         EXPECT_TRUE(r.ok()) << name;
         s = r.scene;
     }
@@ -225,6 +237,58 @@ TEST(Explain, TheFitRecoversKnownCoefficients) {
     EXPECT_NEAR(c[0], 0.3, 1e-5);
     EXPECT_NEAR(c[1], 1.25, 1e-5);
     EXPECT_NEAR(explained, 1.0, 1e-6);
+}
+
+const TermFit* fitted_in(const Region& g, const std::string& name) {
+    for (const TermFit& t : g.terms)
+        if (t.variant.name == name) return &t;
+    return nullptr;
+}
+
+// Two mistakes in two places: the left sphere without its highlights, the right one without its
+// reflections (but with its highlights). One fit over the whole image says the highlights are
+// missing, the right sphere's too; each region's own fit names its own mistake only.
+TEST(Explain, EachRegionGetsTheFitOfItsOwnPixels) {
+    const auto scene = load("(two spheres)");
+    const RenderJob job = small_job();
+    const std::vector<Variant> all = explain_variants(*scene, job);
+    const Variant* no_specular = find_variant(all, "no-specular");
+    const Variant* no_reflection = find_variant(all, "no-reflection");
+    ASSERT_TRUE(no_specular && no_reflection);
+    const LinearImage a = render_variant(*scene, job, no_specular, true);
+    const LinearImage b = render_variant(*scene, job, no_reflection, true);
+    LinearImage image = a;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = kWidth / 2; x < kWidth; ++x) image.rgb[std::size_t(y) * kWidth + x] = b.rgb[std::size_t(y) * kWidth + x];
+    ExplainOptions o;
+    o.max_regions = 2;
+    const Explanation e = explain_image(*scene, job, image, o);
+    ASSERT_EQ(e.regions.size(), 2u);
+    const TermFit* global = fitted(e, "no-specular");
+    ASSERT_TRUE(global);
+    // The whole image's fit, led by the left sphere's highlights, says they are missing everywhere.
+    EXPECT_LT(global->coefficient, 0.2);
+    for (const Region& g : e.regions) {
+        const bool left = g.x < kWidth / 2;
+        SCOPED_TRACE(left ? "the left sphere" : "the right sphere");
+        EXPECT_GT(g.explained, 0.9);
+        const TermFit* spec = fitted_in(g, "no-specular");
+        const TermFit* refl = fitted_in(g, "no-reflection");
+        if (left) {
+            ASSERT_TRUE(spec);
+            EXPECT_NEAR(spec->coefficient, 0.0, 0.1);
+            EXPECT_EQ(refl, nullptr) << "no reflection there to fit";
+            EXPECT_NE(region_fit_words(g).find("the specular highlights are missing"), std::string::npos)
+                << region_fit_words(g);
+        } else {
+            ASSERT_TRUE(refl);
+            EXPECT_NEAR(refl->coefficient, 0.0, 0.1);
+            ASSERT_TRUE(spec) << "the right sphere has highlights";
+            EXPECT_NEAR(spec->coefficient, 1.0, 0.1);
+            EXPECT_NE(region_fit_words(g).find("the reflections are missing"), std::string::npos) << region_fit_words(g);
+            EXPECT_EQ(region_fit_words(g).find("specular"), std::string::npos) << region_fit_words(g);
+        }
+    }
 }
 
 TEST(Explain, RegionsAreTheBlocksThatDiffer) {
