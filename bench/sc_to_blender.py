@@ -14,9 +14,11 @@
 #   smooth (auto-smooth at 30 degrees keeps the caps flat); the cube is exact.
 # - `diffuse` is a Diffuse BSDF (roughness 0: Lambertian), `emit` an Emission shader of strength 1
 #   added to it (Cycles' mesh emitters radiate from both faces, as §9.2 says emit does). Where a
-#   channel of diffuse exceeds 1, the colour is scaled down by it (§9.2). Materials with specular,
-#   reflect, transparent or a texture, and point/spot/directional lights, are refused: this
-#   converter covers the bench scenes (Lambertian surfaces lit by emitters), not the whole format.
+#   channel of diffuse exceeds 1, the colour is scaled down by it (§9.2). Ideal glass (`diffuse 0 0 0
+#   transparent T ior n`, no gloss) is a sharp Refraction BSDF of colour T (no Fresnel term, as
+#   §9.2). Materials with specular, reflect, other transparency or a texture, and
+#   point/spot/directional lights, are refused: this converter covers the bench scenes (Lambertian
+#   surfaces lit by emitters, glass), not the whole format.
 # - the background colour is the world colour at strength 1 (a uniform environment).
 # - the camera: `angle` is the full vertical field of view (sensor fit vertical); near clip 1e-4.
 # - Cycles on the CPU, T threads, N samples, no adaptive sampling, no denoising, no clamping,
@@ -220,13 +222,19 @@ class Parser:
         handlers.update({k: setter(k, 1) for k in ('shine', 'ior', 'gloss')})
         handlers['texture'] = lambda: self.fail(kind, "'texture' is not converted to Cycles")
         self.block(kind, handlers)
-        for k in ('specular', 'reflect', 'transparent'):
+        for k in ('specular', 'reflect'):
             if any(mat.get(k, (0, 0, 0))):
-                self.fail(kind, f"'{k}' is not converted to Cycles (only diffuse and emit)")
+                self.fail(kind, f"'{k}' is not converted to Cycles (only diffuse, emit and ideal glass)")
+        glass = None
+        if any(mat.get('transparent', (0, 0, 0))):
+            # Ideal glass alone (§9.2's delta refraction, no Fresnel term): Cycles' sharp Refraction BSDF.
+            if any(mat['diffuse']) or mat.get('gloss', 0) > 0 or max(mat['transparent']) > 1:
+                self.fail(kind, "'transparent' is converted only as ideal glass: diffuse 0 0 0, no gloss, at most 1")
+            glass = (tuple(mat['transparent']), float(mat.get('ior', 1.0)))
         d = mat['diffuse']
         if max(d) > 1:  # §9.2: a surface never creates energy
             d = tuple(c / max(d) for c in d)
-        return {'type': kind[0], 'diffuse': d, 'emit': mat['emit']}
+        return {'type': kind[0], 'diffuse': d, 'emit': mat['emit'], 'glass': glass}
 
     def instances(self):
         """Every drawn shape with its object->world matrix (§3), following subgraphs from root."""
@@ -326,8 +334,8 @@ def cone_normals(mesh):
     mesh.normals_split_custom_set(normals)
 
 
-def material(bpy, cache, diffuse, emit):
-    key = (tuple(diffuse), tuple(emit))
+def material(bpy, cache, diffuse, emit, glass=None):
+    key = (tuple(diffuse), tuple(emit), glass)
     if key in cache:
         return cache[key]
     mat = bpy.data.materials.new(f'mat{len(cache)}')
@@ -336,9 +344,16 @@ def material(bpy, cache, diffuse, emit):
     for n in list(nt.nodes):
         nt.nodes.remove(n)
     out = nt.nodes.new('ShaderNodeOutputMaterial')
-    bsdf = nt.nodes.new('ShaderNodeBsdfDiffuse')
-    bsdf.inputs['Color'].default_value = (*diffuse, 1.0)
-    bsdf.inputs['Roughness'].default_value = 0.0
+    if glass:
+        bsdf = nt.nodes.new('ShaderNodeBsdfRefraction')
+        bsdf.distribution = 'SHARP'
+        bsdf.inputs['Color'].default_value = (*glass[0], 1.0)
+        bsdf.inputs['IOR'].default_value = glass[1]
+        bsdf.inputs['Roughness'].default_value = 0.0
+    else:
+        bsdf = nt.nodes.new('ShaderNodeBsdfDiffuse')
+        bsdf.inputs['Color'].default_value = (*diffuse, 1.0)
+        bsdf.inputs['Roughness'].default_value = 0.0
     shader = bsdf.outputs['BSDF']
     if any(emit):
         em = nt.nodes.new('ShaderNodeEmission')
@@ -404,7 +419,7 @@ def build_and_render(args):
         scene.collection.objects.link(obj)
         # The mesh is shared, so the material goes on the object's slot.
         obj.material_slots[0].link = 'OBJECT'
-        obj.material_slots[0].material = normals or material(bpy, mats, shape['diffuse'], shape['emit'])
+        obj.material_slots[0].material = normals or material(bpy, mats, shape['diffuse'], shape['emit'], shape['glass'])
 
     eye, d, up, angle = scene_file.camera_frame()
     right = cross(d, up)

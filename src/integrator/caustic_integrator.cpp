@@ -47,20 +47,20 @@ private:
     std::uint64_t state_;
 };
 
-bool has_delta_lobe(const Material& m) {
-    return !(m.gloss > 0.0f) && max_component(m.reflect + m.transparent) > 0.0f;
-}
-
 }  // namespace
 
 bool scene_has_caustic_paths(const SceneData& scene) {
-    if (scene.lights.empty()) return false;
+    const bool emitter = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                     [](const Material& m) { return max_component(m.emit) > 0.0f; });
+    if (scene.lights.empty() && !emitter) return false;
     return std::any_of(scene.materials.begin(), scene.materials.end(), has_delta_lobe);
 }
 
 CausticIntegrator::CausticIntegrator(const Scene& scene, const Camera& camera, const CausticSettings& settings)
     : Integrator(scene, camera), path_(scene, camera, settings.max_bounces), settings_(settings),
-      emitter_(scene.data, scene.bvh.bounds()) {
+      emitter_(scene, settings.aim) {
+    // The emitters' light that meets an ideal mirror or glass first is the photons' from here on.
+    path_.leave_emitter_caustics_to_photons(true);
     const Bounds b = scene.bvh.bounds();
     const float diagonal = b.empty() ? 1.0f : glm::length(b.extent());
     r0_ = settings.radius > 0.0f ? settings.radius : std::max(1e-6f, diagonal / 500.0f);
@@ -75,24 +75,31 @@ const PhotonMap& CausticIntegrator::photon_map(int s) const {
     return s >= prepared_.begin && s < prepared_.end ? maps_[std::size_t(s - prepared_.begin)].map : empty;
 }
 
-void CausticIntegrator::trace_photon(std::uint64_t key, std::uint64_t index, std::vector<Photon>& out) const {
+bool CausticIntegrator::trace_photon(std::uint64_t key, std::uint64_t index, std::vector<Photon>& out) const {
     PhotonRandom rng(key, index);
-    const float u_light = rng.next();
-    const glm::vec2 u_point = rng.next2(), u_dir = rng.next2();
-    EmittedPhoton e = emitter_.emit(u_light, u_point, u_dir);
+    EmissionNumbers u;
+    u.light = rng.next();
+    u.point = rng.next2();
+    u.dir = rng.next2();
+    u.cone = rng.next();
+    u.triangle = rng.next();
+    u.side = rng.next();
+    EmittedPhoton e = emitter_.emit(u);
     Ray ray = e.ray;
     glm::vec3 beta = e.power;
     const float beta0 = max_component(beta);
-    if (!(beta0 > 0.0f)) return;
+    if (!(beta0 > 0.0f)) return false;
+    bool reached = false;  // the first surface has a delta lobe
     float travelled = 0.0f;  // from the light, along the photon's path (unit directions: t is distance)
     for (int depth = 0; depth < settings_.max_bounces; ++depth) {
         Hit hit;
-        if (!scene_.intersect(ray, hit)) return;
+        if (!scene_.intersect(ray, hit)) return reached;
         const Surface s = surface_at(scene_, ray, hit);
         travelled += hit.t;
         const glm::vec3 wo = -ray.direction;
         const Bsdf bsdf(*s.material, s.diffuse, s.normal, wo);
-        if (bsdf.black()) return;
+        if (bsdf.black()) return reached;
+        if (depth == 0) reached = bsdf.non_delta_probability() < 1.0f;
         // Light that lands first where a non-delta lobe takes it is the path tracer's (its
         // next-event estimate); from the second surface on, every photon counts.
         if (depth > 0 && bsdf.has_non_delta()) {
@@ -103,9 +110,9 @@ void CausticIntegrator::trace_photon(std::uint64_t key, std::uint64_t index, std
         }
         const float u_lobe = rng.next();
         const glm::vec2 u = rng.next2();
-        if (depth == 0 && u_lobe < bsdf.non_delta_probability()) return;
+        if (depth == 0 && u_lobe < bsdf.non_delta_probability()) return reached;
         const BsdfSample bs = bsdf.sample(u_lobe, u);
-        if (!bs.valid || max_component(bs.weight) <= 0.0f) return;
+        if (!bs.valid || max_component(bs.weight) <= 0.0f) return reached;
         beta *= bs.weight;
         // §9.2 refracts radiance unscaled: flux crossing into a denser medium is squeezed into a
         // narrower cone, so a photon carries (η_from / η_to)² of it (it comes back on the way out).
@@ -116,11 +123,12 @@ void CausticIntegrator::trace_photon(std::uint64_t key, std::uint64_t index, std
         }
         if (depth >= 2) {
             const float q = std::min(1.0f, max_component(beta) / beta0);
-            if (rng.next() >= q) return;
+            if (rng.next() >= q) return reached;
             beta /= q;
         }
         ray = Ray{spawn(s.point, s.normal, bs.wi), bs.wi};
     }
+    return reached;
 }
 
 bool CausticIntegrator::prepare(const SampleRange& range) const {
@@ -137,6 +145,8 @@ bool CausticIntegrator::prepare(const SampleRange& range) const {
     std::vector<std::size_t> emitted(samples, 0);
     std::vector<std::uint8_t> cut(samples, 0);
     std::vector<std::vector<Photon>> wave(kWave);
+    std::vector<std::size_t> wave_reached(kWave);
+    std::vector<std::size_t> reached(samples, 0);
     // Work items are (sample, chunk) pairs in order, traced a wave at a time on the job's threads,
     // then appended in order: sample k's chunks stop at the first that would pass its share.
     const std::size_t items = samples * chunks;
@@ -145,6 +155,7 @@ bool CausticIntegrator::prepare(const SampleRange& range) const {
         std::atomic<bool> stopped{false};
         parallel_for(n, worker_count(range.threads, n), [&](std::size_t k, int) {
             wave[k].clear();
+            wave_reached[k] = 0;
             const std::size_t item = i0 + k, sample = item / chunks, chunk = item % chunks;
             if (cut[sample]) return;
             if (range.cancel && range.cancel->load(std::memory_order_relaxed)) {
@@ -153,7 +164,7 @@ bool CausticIntegrator::prepare(const SampleRange& range) const {
             }
             const std::uint64_t key = (std::uint64_t(range.seed) << 32) ^ std::uint64_t(range.begin + int(sample));
             const std::size_t from = chunk * kChunk, to = std::min(per, from + kChunk);
-            for (std::size_t i = from; i < to; ++i) trace_photon(key, i, wave[k]);
+            for (std::size_t i = from; i < to; ++i) wave_reached[k] += trace_photon(key, i, wave[k]) ? 1 : 0;
         });
         if (stopped || (range.cancel && range.cancel->load())) {
             maps_.clear();
@@ -167,6 +178,7 @@ bool CausticIntegrator::prepare(const SampleRange& range) const {
                 continue;
             }
             photons[sample].insert(photons[sample].end(), wave[k].begin(), wave[k].end());
+            reached[sample] += wave_reached[k];
             emitted[sample] = std::min(per, (chunk + 1) * kChunk);
         }
     }
@@ -174,6 +186,7 @@ bool CausticIntegrator::prepare(const SampleRange& range) const {
     for (std::size_t k = 0; k < samples; ++k) {
         const float radius = radius_of_sample(range.begin + int(k));
         stats_.emitted += emitted[k];
+        stats_.reached += reached[k];
         stats_.stored += photons[k].size();
         stats_.cut = stats_.cut || cut[k];
         maps_[k].map.build(std::move(photons[k]), radius);

@@ -1,12 +1,16 @@
 #pragma once
 // Path mode with caustics: the path tracer's image plus the light that reaches a surface from a
-// point, spot or directional light by way of an ideal mirror or refraction first (scene-format.md
-// §9.2), which the path tracer cannot find (a delta light is reached only by next-event estimation,
-// and a delta lobe cannot be connected to).
+// light or an emissive shape by way of an ideal mirror or refraction first (scene-format.md §9.2),
+// which the path tracer cannot find from a point, spot or directional light (a delta light is
+// reached only by next-event estimation, and a delta lobe cannot be connected to) and finds from an
+// emissive shape only by chance (a sampled direction that happens to refract onto it).
 //
 // The two estimators split the paths between them, so nothing is counted twice: the path tracer
-// takes every path whose vertex next to a delta light scatters by a non-delta lobe (its next-event
-// estimate); the photons take every path whose vertex next to the light scatters by a delta lobe.
+// takes every path whose vertex next to the light scatters by a non-delta lobe (its next-event
+// estimate and its BSDF-sampled hits), and an emitter seen through delta lobes alone from the
+// camera; the photons take every path whose vertex next to the light scatters by a delta lobe and
+// that has a non-delta vertex before the camera (the path tracer leaves those out:
+// PathIntegrator::leave_emitter_caustics_to_photons).
 // A photon leaves a light (integrator/photon_emitter.h), ends at its first surface unless a delta
 // lobe is drawn there, then is stored at every later surface with a non-delta lobe, scattering on
 // by the BSDF with Russian roulette. A camera sample follows delta lobes to the first vertex that
@@ -36,8 +40,8 @@
 
 namespace whitted {
 
-// Whether photons carry any light in the scene: a point, spot or directional light, and a
-// material with an ideal (delta) mirror or refraction lobe.
+// Whether photons carry any light in the scene: a light or an emissive shape, and a material with
+// an ideal (delta) mirror or refraction lobe.
 bool scene_has_caustic_paths(const SceneData& scene);
 
 struct CausticSettings {
@@ -45,10 +49,12 @@ struct CausticSettings {
     int photons_per_sample = 1 << 16;  // emitted, per sample index
     float radius = 0.0f;               // r0 in world units; 0 = 1/500 of the scene's bounding diagonal
     std::size_t max_stored = std::size_t(1) << 23;  // photons the maps of one prepare() may store
+    bool aim = true;  // photons drawn toward the objects with a delta lobe (integrator/photon_emitter.h)
 };
 
 struct PhotonPassStats {
     std::size_t emitted = 0, stored = 0;
+    std::size_t reached = 0;  // photons whose first surface has a delta lobe (the others are wasted)
     std::size_t bytes = 0;  // the map's memory
     float radius = 0.0f;
     bool cut = false;  // the photon budget cut the samples' photons
@@ -76,8 +82,9 @@ public:
     static constexpr std::size_t bytes_per_photon() { return sizeof(Photon) + 4 * sizeof(std::uint32_t); }
 
 private:
-    // Traces photon `index` keyed `key` (seed and sample index), appending what it stores to `out`.
-    void trace_photon(std::uint64_t key, std::uint64_t index, std::vector<Photon>& out) const;
+    // Traces photon `index` keyed `key` (seed and sample index), appending what it stores to `out`;
+    // whether its first surface had a delta lobe.
+    bool trace_photon(std::uint64_t key, std::uint64_t index, std::vector<Photon>& out) const;
 
     struct SampleMap {
         PhotonMap map;

@@ -105,6 +105,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
     Ray ray = camera_ray;
     bool delta_before = true;  // the camera, or a delta lobe: emission seen is counted whole
     float bsdf_pdf = 0.0f;     // of the direction that led here (non-delta)
+    bool scattered = false;    // a non-delta lobe was drawn at some vertex before
     glm::vec3 from(0.0f);
     for (int bounce = 0;; ++bounce) {
         Hit hit;
@@ -119,7 +120,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
         const glm::vec3 wo = -glm::normalize(ray.direction);
         if (max_component(m.emit) > 0.0f) {
             if (delta_before) {
-                radiance += beta * m.emit;
+                if (!(scattered && emitter_caustics_to_photons_)) radiance += beta * m.emit;
             } else {
                 // The same light could have been found by next-event estimation: weigh the two.
                 const glm::vec3 to = s.point - from;
@@ -148,6 +149,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
         if (!bs.valid || max_component(bs.weight) <= 0.0f) break;
         beta *= bs.weight;
         delta_before = bs.delta;
+        scattered = scattered || !bs.delta;
         bsdf_pdf = bs.pdf;
         from = s.point;
         ray = Ray{spawn(s.point, s.normal, bs.wi), bs.wi};

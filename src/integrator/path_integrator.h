@@ -21,6 +21,10 @@ public:
                   RayCounts& counts) const override;
     bool clamps_samples() const override { return false; }  // radiance, averaged as it is
 
+    // With photons from the emissive shapes (integrator/caustic_integrator.h): an emitter reached
+    // through delta lobes from a vertex that drew a non-delta one is the photons' path; left out here.
+    void leave_emitter_caustics_to_photons(bool leave) { emitter_caustics_to_photons_ = leave; }
+
     // One camera ray on its own (nullptr first: find its first hit here). With `direct`, also the
     // part of the colour that reached the camera in at most one bounce: emitters and the background
     // seen, and light reaching the first surface (its next-event estimate and the emitter or
@@ -35,6 +39,7 @@ private:
 
     int max_bounces_;
     PathLights lights_;
+    bool emitter_caustics_to_photons_ = false;
 };
 
 // Warnings that hold only in path mode: materials whose weights sum above 1 in some channel and are
