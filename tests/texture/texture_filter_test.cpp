@@ -72,6 +72,34 @@ TEST(TextureFilter, MipLevelsAreBoxFilteredHalves) {
     EXPECT_EQ(mip_levels_bytes(5, 3), 3u * (3 * 2 + 2 * 1 + 1));
 }
 
+// A camera's auxiliary rays are its rays of the next pixel to the right and the next one down,
+// from the same lens point: for a pinhole from the eye, for a thin lens through the point where
+// the neighbouring pixel's ray crosses the plane in focus.
+TEST(TextureFilter, CameraDifferentialsAreTheNeighbouringPixelsRays) {
+    Camera cam;
+    cam.eye = {1, 2, 3};
+    cam.forward = glm::normalize(glm::vec3(-0.3f, -0.2f, -1));
+    cam.right = glm::normalize(glm::cross(cam.forward, glm::vec3(0, 1, 0)));
+    cam.up = glm::cross(cam.right, cam.forward);
+    cam.tan_half_fov = 0.4f;
+    constexpr int kW = 320, kH = 200;
+    const float pitch = 2 * cam.tan_half_fov / kH;
+    for (float radius : {0.0f, 0.25f}) {
+        cam.lens_radius = radius;
+        cam.focal_distance = 4.0f;
+        for (glm::vec2 lens : {glm::vec2(0.5f), glm::vec2(0.1f, 0.8f), glm::vec2(0.93f, 0.35f)}) {
+            SCOPED_TRACE("lens radius " + std::to_string(radius) + " at " + std::to_string(lens.x));
+            const float x = 41.3f, y = 150.6f;
+            const RayDifferential d = cam.differential(cam.generate_ray(kW, kH, x, y, lens), pitch);
+            const Ray right = cam.generate_ray(kW, kH, x + 1, y, lens), down = cam.generate_ray(kW, kH, x, y + 1, lens);
+            EXPECT_NEAR(glm::length(d.x.origin - right.origin), 0.0f, 1e-5f);
+            EXPECT_NEAR(glm::length(d.y.origin - down.origin), 0.0f, 1e-5f);
+            EXPECT_NEAR(glm::length(d.x.direction - right.direction), 0.0f, 1e-5f);
+            EXPECT_NEAR(glm::length(d.y.direction - down.direction), 0.0f, 1e-5f);
+        }
+    }
+}
+
 // A camera at height h above the floor y = 0, looking down at β below the horizon: the centre
 // ray meets the floor at distance D = h / sin β. One pixel to the right moves the hit by
 // D·pitch along x (pitch = 2 tan(fov/2) / rows, the pixel's size on the plane at distance 1);
