@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 
 #include "integrator/glass_transmittance.h"
 #include "sampler/warp.h"
@@ -169,18 +168,22 @@ glm::vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const glm::vec3& w
         rec.miss(scene_.data.background);
         return scene_.data.background;
     }
-    SurfaceDifferentials sd;
-    const ShadingPoint p = shading_point(ray, hit, rd, &sd);
+    if (rd) {  // (apart, so that the common path keeps no differentials on its stack)
+        Differentials d{*rd, {}};
+        const ShadingPoint p = shading_point(ray, hit, &d);
+        rec.hit(ray, hit, p.s, p.n, p.outside, depth);
+        return shade_at(p, depth, weight, ctx, counts, nullptr, 0, rec, p.differentials ? &d : nullptr);
+    }
+    const ShadingPoint p = shading_point(ray, hit);
     rec.hit(ray, hit, p.s, p.n, p.outside, depth);
-    return shade_at(p, depth, weight, ctx, counts, nullptr, 0, rec, p.differentials ? rd : nullptr, &sd);
+    return shade_at(p, depth, weight, ctx, counts, nullptr, 0, rec);
 }
 
 WhittedIntegrator::ShadingPoint WhittedIntegrator::shading_point(const Ray& ray, const Hit& hit,
-                                                                 const RayDifferential* rd,
-                                                                 SurfaceDifferentials* sd) const {
+                                                                 Differentials* d) const {
     ShadingPoint p;
     p.s = surface_at(scene_, ray, hit);
-    if (filter_ != TextureFilter::Bilinear) filter_texture(p, hit, rd, sd);
+    if (filter_ != TextureFilter::Bilinear) filter_texture(p, hit, d);
     if (variant_ && conventions_.normals_by_m)
         p.s.normal = normal_by_m(scene_.data.instances[hit.instance], p.s.object_normal);
     p.dir = glm::normalize(ray.direction);
@@ -194,10 +197,9 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::shading_point(const Ray& ray,
 
 // The texture read again with the filter asked for, over the hit's footprint when the ray has
 // differentials (their hit's SurfaceDifferentials also carry them on through mirrors and glass).
-void WhittedIntegrator::filter_texture(ShadingPoint& p, const Hit& hit, const RayDifferential* rd,
-                                       SurfaceDifferentials* sd) const {
-    p.differentials = rd && sd && surface_differentials(scene_, hit, p.s, *rd, *sd);
-    refilter_texture(scene_, p.s, filter_, p.differentials ? &sd->uv : nullptr);
+void WhittedIntegrator::filter_texture(ShadingPoint& p, const Hit& hit, Differentials* d) const {
+    p.differentials = d && surface_differentials(scene_, hit, p.s, d->ray, d->surface);
+    refilter_texture(scene_, p.s, filter_, p.differentials ? &d->surface.uv : nullptr);
 }
 
 // Whether `light` lights the point at all (before shadows): facing it, and not out of its cone.
@@ -219,8 +221,7 @@ bool WhittedIntegrator::secondary_direction(const glm::vec3& ideal, const glm::v
 template <class Recorder>
 glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight,
                                       const SampleContext& ctx, RayCounts& counts, const PacketShadows* shadows,
-                                      int lane, Recorder& rec, const RayDifferential* rd,
-                                      const SurfaceDifferentials* sd) const {
+                                      int lane, Recorder& rec, const Differentials* diff) const {
     const SceneData& flat = scene_.data;
     const Surface& s = p.s;
     const Material& m = *s.material;
@@ -290,10 +291,15 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
                 !(limited = !ctx.take_ray())) {
                 ++counts.refracted;
                 rec.secondary(SecondaryKind::Refract, SecondaryRecord::Outcome::Traced, Ray{below, d}, w);
-                std::optional<RayDifferential> next;
-                if (rd && !refracted_differential(s.point, n, outside ? 1.0f : -1.0f, eta, *rd, *sd, next.emplace()))
-                    next.reset();  // an auxiliary ray totally reflected: none from here on
-                const glm::vec3 c = trace(Ray{below, d}, depth + 1, w, ctx, counts, rec, next ? &*next : nullptr);
+                glm::vec3 c;
+                if (diff) {
+                    RayDifferential next;  // none from here on if an auxiliary ray is totally reflected
+                    const bool carried = refracted_differential(s.point, n, outside ? 1.0f : -1.0f, eta, diff->ray,
+                                                                diff->surface, next);
+                    c = trace(Ray{below, d}, depth + 1, w, ctx, counts, rec, carried ? &next : nullptr);
+                } else {
+                    c = trace(Ray{below, d}, depth + 1, w, ctx, counts, rec);
+                }
                 color += m.transparent * c;
                 rec.secondary_color(c, m.transparent * c);
             } else if constexpr (Recorder::kRecords) {
@@ -319,9 +325,14 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
             !(limited = !ctx.take_ray())) {
             ++counts.reflected;
             rec.secondary(SecondaryKind::Reflect, SecondaryRecord::Outcome::Traced, Ray{above, d}, w);
-            std::optional<RayDifferential> next;
-            if (rd) next = reflected_differential(s.point, n, outside ? 1.0f : -1.0f, *rd, *sd);
-            const glm::vec3 c = trace(Ray{above, d}, depth + 1, w, ctx, counts, rec, next ? &*next : nullptr);
+            glm::vec3 c;
+            if (diff) {
+                const RayDifferential next =
+                    reflected_differential(s.point, n, outside ? 1.0f : -1.0f, diff->ray, diff->surface);
+                c = trace(Ray{above, d}, depth + 1, w, ctx, counts, rec, &next);
+            } else {
+                c = trace(Ray{above, d}, depth + 1, w, ctx, counts, rec);
+            }
             color += reflect_weight * c;
             rec.secondary_color(c, reflect_weight * c);
         } else if constexpr (Recorder::kRecords) {

@@ -55,7 +55,9 @@ private:
         Surface s;
         glm::vec3 dir, n, above, below;
         bool outside;
-        bool differentials = false;  // the SurfaceDifferentials beside it hold the hit's footprint
+        // Whether the Differentials beside it hold the hit's footprint: set by filter_texture, read
+        // only for rays that carry differentials (which a filter reading footprints gives).
+        bool differentials;
     };
     // Which sample is being shaded: where its further random numbers come from.
     struct SampleContext {
@@ -72,9 +74,13 @@ private:
     struct PacketShadows {
         ShadowQuery query[kPacketLights][kPacketSize] = {};
     };
-    ShadingPoint shading_point(const Ray& ray, const Hit& hit, const RayDifferential* rd = nullptr,
-                               SurfaceDifferentials* sd = nullptr) const;
-    void filter_texture(ShadingPoint& p, const Hit& hit, const RayDifferential* rd, SurfaceDifferentials* sd) const;
+    // A ray's differentials and, once it has hit, the surface's there.
+    struct Differentials {
+        RayDifferential ray;
+        SurfaceDifferentials surface;
+    };
+    ShadingPoint shading_point(const Ray& ray, const Hit& hit, Differentials* d = nullptr) const;
+    void filter_texture(ShadingPoint& p, const Hit& hit, Differentials* d) const;
     // The camera ray's auxiliary rays into `rd` when textures are read over a footprint, else null.
     const RayDifferential* camera_differential(const Ray& ray, RayDifferential& rd) const;
     static bool faces_light(const ShadingPoint& p, const LightSample& ls);
@@ -86,7 +92,7 @@ private:
     template <class Recorder>
     glm::vec3 shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight, const SampleContext& ctx,
                        RayCounts& counts, const PacketShadows* shadows, int lane, Recorder& rec,
-                       const RayDifferential* rd = nullptr, const SurfaceDifferentials* sd = nullptr) const;
+                       const Differentials* d = nullptr) const;
     inline glm::vec3 through_glass(const LightSample& ls, const glm::vec3& start) const;
     glm::vec3 shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start) const;
     template <class Recorder>
