@@ -19,7 +19,8 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 // Everything in the load options that changes what a load produces.
 std::string options_key(const LoadOptions& o) {
     std::ostringstream k;
-    k << o.lenient << '|' << o.time << '|' << int(o.textures.missing) << '|' << int(o.cs1230_stage);
+    k << o.lenient << '|' << o.time << '|' << int(o.textures.missing) << '|' << int(o.cs1230_stage) << '|'
+      << o.textures.limits.mip_levels;  // a filter that reads mip-maps needs them built
     for (const auto& d : o.textures.search_dirs) k << "|d:" << d;
     for (const auto& [name, file] : o.textures.overrides) k << "|o:" << name << '=' << file << '@' << file_stamp(file);
     for (const auto& name : o.textures.checker_names) k << "|c:" << name;

@@ -13,4 +13,16 @@ Ray Camera::generate_ray(int width, int height, float x, float y, glm::vec2 lens
     return Ray{origin, glm::normalize(in_focus - origin)};
 }
 
+RayDifferential Camera::differential(const Ray& ray, float pitch) const {
+    // Where the ray meets the plane in focus (a pinhole's rays all start at the eye, so any plane
+    // will do: the one at distance 1). The ray starts on the lens plane, through the eye.
+    const float plane = is_pinhole() ? 1.0f : focal_distance;
+    const glm::vec3 focus =
+        ray.origin + ray.direction * ((plane - glm::dot(ray.origin - eye, forward)) / glm::dot(ray.direction, forward));
+    RayDifferential d;
+    d.x = Ray{ray.origin, glm::normalize(focus + plane * pitch * right - ray.origin)};
+    d.y = Ray{ray.origin, glm::normalize(focus - plane * pitch * up - ray.origin)};  // row y + 1 is lower
+    return d;
+}
+
 }  // namespace whitted

@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "base/ray.h"
+#include "base/ray_differential.h"
 
 namespace whitted {
 
@@ -32,6 +33,10 @@ struct Camera {
         const float sy = (1.0f - 2.0f * y / float(height)) * tan_half_fov;
         return forward + sx * right + sy * up;  // its forward component is 1
     }
+    // The auxiliary rays of `ray` (one this camera made): through the image positions `pitch`
+    // further right and down on the plane at distance 1 (2·tan_half_fov / rows for a pixel of an
+    // image `rows` high), from the same lens point, so through the same point of the plane in focus.
+    RayDifferential differential(const Ray& ray, float pitch) const;
     bool is_pinhole() const { return !(lens_radius > 0.0f); }
     bool operator==(const Camera&) const = default;
 };

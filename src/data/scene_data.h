@@ -21,6 +21,9 @@ struct SceneData {
     std::vector<Material> materials;
     std::vector<Light> lights;
     std::vector<TextureImage> textures;
+    // Per texture, its mip-map pyramid below the image (texture/texture_filter.h): only when the
+    // render's texture filter reads one (--texture-filter trilinear or ewa), else empty.
+    std::vector<std::vector<TextureImage>> texture_levels;
     std::vector<TriangleMesh> meshes;  // one per OBJ file, however many instances draw it
     Camera camera;  // the file's camera: what a render uses unless it is given another
     glm::vec3 background{0.0f};

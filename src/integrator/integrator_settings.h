@@ -4,6 +4,7 @@
 #include "cs1230/stage.h"
 #include "integrator/conventions.h"
 #include "integrator/render_mode.h"
+#include "texture/texture_filter.h"
 
 namespace whitted {
 
@@ -19,6 +20,11 @@ struct IntegratorSettings {
     // world units (0 = from the scene's size).
     int photons = 1 << 16;
     float photon_radius = 0.0f;
+    // How textures are read, and for trilinear and ewa the footprint of a camera sample: the
+    // image's rows times the samples' spacing within a pixel (√ of the samples per pixel, at most
+    // 8); 0 = no footprint (textures are read from their image, bilinearly).
+    TextureFilter texture_filter = TextureFilter::Bilinear;
+    float texture_sample_rows = 0.0f;
     bool operator==(const IntegratorSettings&) const = default;
 };
 

@@ -15,7 +15,8 @@ std::unique_ptr<Integrator> make_integrator(const Scene& scene, const Camera& ca
             // A scene lit by the course's model (§9.5) is drawn by it; every other by §7's.
             if (scene.data.lighting == LightingModel::Cs1230)
                 return std::make_unique<Cs1230Integrator>(scene, camera, settings.max_depth, settings.cs1230_stage);
-            return std::make_unique<WhittedIntegrator>(scene, camera, settings.max_depth, settings.conventions);
+            return std::make_unique<WhittedIntegrator>(scene, camera, settings.max_depth, settings.conventions,
+                                                       settings.texture_filter, settings.texture_sample_rows);
         case RenderMode::Raycast: return std::make_unique<RaycastIntegrator>(scene, camera);
         case RenderMode::Normals: return std::make_unique<NormalsIntegrator>(scene, camera);
         case RenderMode::Depth: return std::make_unique<DepthIntegrator>(scene, camera);

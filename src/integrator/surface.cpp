@@ -24,17 +24,19 @@ Surface surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
     s.material = &scene.data.materials[inst.material];
     s.diffuse = s.material->diffuse;
     s.ambient = s.material->ambient;
-    if (s.material->texture >= 0) {
-        glm::vec3 texel = sample_texture(scene.data.textures[s.material->texture], s.uv, s.material->repeat_u,
-                                         s.material->repeat_v);
-        if (s.material->blend >= 0) {  // Brown/Tufts `blend` (spec §9.4): a mix, the ambient left as is
-            s.diffuse = (1.0f - s.material->blend) * s.diffuse + s.material->blend * texel;
-        } else {  // the texel multiplies diffuse and ambient (spec §8)
-            s.diffuse *= texel;
-            s.ambient *= texel;
-        }
-    }
+    if (s.material->texture >= 0)
+        mix_texel(s, sample_texture(scene.data.textures[s.material->texture], s.uv, s.material->repeat_u,
+                                    s.material->repeat_v));
     return s;
+}
+
+void mix_texel(Surface& s, const glm::vec3& texel) {
+    if (s.material->blend >= 0) {  // Brown/Tufts `blend` (spec §9.4): a mix, the ambient left as is
+        s.diffuse = (1.0f - s.material->blend) * s.diffuse + s.material->blend * texel;
+    } else {  // the texel multiplies diffuse and ambient (spec §8)
+        s.diffuse *= texel;
+        s.ambient *= texel;
+    }
 }
 
 }  // namespace whitted

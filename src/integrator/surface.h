@@ -18,4 +18,7 @@ struct Surface {
 
 Surface surface_at(const Scene& scene, const Ray& ray, const Hit& hit);
 
+// Mixes a texel of the surface's texture into its material's diffuse and ambient (spec §8, §9.4).
+void mix_texel(Surface& s, const glm::vec3& texel);
+
 }  // namespace whitted

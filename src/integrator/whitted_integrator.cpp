@@ -31,23 +31,41 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Camera& camera, i
                                      const Conventions& conventions)
     : Integrator(scene, camera), max_depth_(max_depth), conventions_(conventions), variant_(conventions.any()) {}
 
+WhittedIntegrator::WhittedIntegrator(const Scene& scene, const Camera& camera, int max_depth,
+                                     const Conventions& conventions, TextureFilter filter, float sample_rows)
+    : WhittedIntegrator(scene, camera, max_depth, conventions) {
+    filter_ = filter;
+    if (uses_footprint(filter) && sample_rows > 0.0f) pitch_ = 2.0f * camera.tan_half_fov / sample_rows;
+}
+
+const RayDifferential* WhittedIntegrator::camera_differential(const Ray& ray, RayDifferential& rd) const {
+    if (!(pitch_ > 0.0f)) return nullptr;
+    rd = camera_.differential(ray, pitch_);
+    return &rd;
+}
+
 glm::vec3 WhittedIntegrator::radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler,
                                       RayCounts& counts) const {
     ++counts.camera;
     NoShadingRecorder none;
-    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, none);
+    RayDifferential rd;
+    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, none, camera_differential(ray, rd));
 }
 
 glm::vec3 WhittedIntegrator::radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler, RayCounts& counts,
                                       ShadingRecorder& recorder) const {
     ++counts.camera;
-    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, recorder);
+    RayDifferential rd;
+    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, recorder,
+                 camera_differential(ray, rd));
 }
 
 glm::vec3 WhittedIntegrator::radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler, RayCounts& counts,
                                       AovRecorder& recorder) const {
     ++counts.camera;
-    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, recorder);
+    RayDifferential rd;
+    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, recorder,
+                 camera_differential(ray, rd));
 }
 
 // Whether the shadow query may start at the light. A hit found along a ray is off by about 1e-7
@@ -89,7 +107,9 @@ glm::vec3 WhittedIntegrator::through_glass(const LightSample& ls, const glm::vec
 
 void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sampler, glm::vec3 (&out)[kPacketSize],
                                  RayCounts& counts) const {
-    if (variant_) {  // a classic mistake made on purpose (whitted explain): its switches are read one ray at a time
+    // A classic mistake made on purpose (whitted explain): its switches are read one ray at a time;
+    // so are the rays that carry differentials.
+    if (variant_ || pitch_ > 0.0f) {
         for (int l = 0; l < kPacketSize; ++l)
             if ((batch.active >> l) & 1) out[l] = radiance(batch.rays[l], batch.keys[l], sampler, counts);
         return;
@@ -142,20 +162,28 @@ void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sample
 
 template <class Recorder>
 glm::vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx,
-                                   RayCounts& counts, Recorder& rec) const {
+                                   RayCounts& counts, Recorder& rec, const RayDifferential* rd) const {
     Hit hit;
     if (!scene_.intersect(ray, hit)) {
         rec.miss(scene_.data.background);
         return scene_.data.background;
+    }
+    if (rd) {  // (apart, so that the common path keeps no differentials on its stack)
+        Differentials d{*rd, {}};
+        const ShadingPoint p = shading_point(ray, hit, &d);
+        rec.hit(ray, hit, p.s, p.n, p.outside, depth);
+        return shade_at(p, depth, weight, ctx, counts, nullptr, 0, rec, p.differentials ? &d : nullptr);
     }
     const ShadingPoint p = shading_point(ray, hit);
     rec.hit(ray, hit, p.s, p.n, p.outside, depth);
     return shade_at(p, depth, weight, ctx, counts, nullptr, 0, rec);
 }
 
-WhittedIntegrator::ShadingPoint WhittedIntegrator::shading_point(const Ray& ray, const Hit& hit) const {
+WhittedIntegrator::ShadingPoint WhittedIntegrator::shading_point(const Ray& ray, const Hit& hit,
+                                                                 Differentials* d) const {
     ShadingPoint p;
     p.s = surface_at(scene_, ray, hit);
+    if (filter_ != TextureFilter::Bilinear) filter_texture(p, hit, d);
     if (variant_ && conventions_.normals_by_m)
         p.s.normal = normal_by_m(scene_.data.instances[hit.instance], p.s.object_normal);
     p.dir = glm::normalize(ray.direction);
@@ -165,6 +193,13 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::shading_point(const Ray& ray,
     p.above = p.s.point + offset * p.n;  // the viewer's side of the surface
     p.below = p.s.point - offset * p.n;
     return p;
+}
+
+// The texture read again with the filter asked for, over the hit's footprint when the ray has
+// differentials (their hit's SurfaceDifferentials also carry them on through mirrors and glass).
+void WhittedIntegrator::filter_texture(ShadingPoint& p, const Hit& hit, Differentials* d) const {
+    p.differentials = d && surface_differentials(scene_, hit, p.s, d->ray, d->surface);
+    refilter_texture(scene_, p.s, filter_, p.differentials ? &d->surface.uv : nullptr);
 }
 
 // Whether `light` lights the point at all (before shadows): facing it, and not out of its cone.
@@ -186,7 +221,7 @@ bool WhittedIntegrator::secondary_direction(const glm::vec3& ideal, const glm::v
 template <class Recorder>
 glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight,
                                       const SampleContext& ctx, RayCounts& counts, const PacketShadows* shadows,
-                                      int lane, Recorder& rec) const {
+                                      int lane, Recorder& rec, const Differentials* diff) const {
     const SceneData& flat = scene_.data;
     const Surface& s = p.s;
     const Material& m = *s.material;
@@ -256,7 +291,15 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
                 !(limited = !ctx.take_ray())) {
                 ++counts.refracted;
                 rec.secondary(SecondaryKind::Refract, SecondaryRecord::Outcome::Traced, Ray{below, d}, w);
-                const glm::vec3 c = trace(Ray{below, d}, depth + 1, w, ctx, counts, rec);
+                glm::vec3 c;
+                if (diff) {
+                    RayDifferential next;  // none from here on if an auxiliary ray is totally reflected
+                    const bool carried = refracted_differential(s.point, n, outside ? 1.0f : -1.0f, eta, diff->ray,
+                                                                diff->surface, next);
+                    c = trace(Ray{below, d}, depth + 1, w, ctx, counts, rec, carried ? &next : nullptr);
+                } else {
+                    c = trace(Ray{below, d}, depth + 1, w, ctx, counts, rec);
+                }
                 color += m.transparent * c;
                 rec.secondary_color(c, m.transparent * c);
             } else if constexpr (Recorder::kRecords) {
@@ -282,7 +325,14 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
             !(limited = !ctx.take_ray())) {
             ++counts.reflected;
             rec.secondary(SecondaryKind::Reflect, SecondaryRecord::Outcome::Traced, Ray{above, d}, w);
-            const glm::vec3 c = trace(Ray{above, d}, depth + 1, w, ctx, counts, rec);
+            glm::vec3 c;
+            if (diff) {
+                const RayDifferential next =
+                    reflected_differential(s.point, n, outside ? 1.0f : -1.0f, diff->ray, diff->surface);
+                c = trace(Ray{above, d}, depth + 1, w, ctx, counts, rec, &next);
+            } else {
+                c = trace(Ray{above, d}, depth + 1, w, ctx, counts, rec);
+            }
             color += reflect_weight * c;
             rec.secondary_color(c, reflect_weight * c);
         } else if constexpr (Recorder::kRecords) {

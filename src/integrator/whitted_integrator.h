@@ -12,6 +12,7 @@
 #include "integrator/light_sample.h"
 #include "integrator/shading_record.h"
 #include "integrator/surface.h"
+#include "integrator/texture_footprint.h"
 
 namespace whitted {
 
@@ -25,6 +26,11 @@ constexpr std::uint32_t kMaxSecondaryRays = 4094;
 class WhittedIntegrator final : public Integrator {
 public:
     WhittedIntegrator(const Scene& scene, const Camera& camera, int max_depth, const Conventions& conventions = {});
+    // Textures read with `filter`; for trilinear and ewa over the footprint of camera samples
+    // spaced as the rows of an image `sample_rows` high (integrator_settings.h; 0 = none), carried
+    // through mirrors and glass.
+    WhittedIntegrator(const Scene& scene, const Camera& camera, int max_depth, const Conventions& conventions,
+                      TextureFilter filter, float sample_rows);
 
     // The camera rays' nearest hits are found a packet at a time, and the shadow rays toward
     // point and spot lights from those hits are traced as packets too; every colour is exactly
@@ -49,6 +55,9 @@ private:
         Surface s;
         glm::vec3 dir, n, above, below;
         bool outside;
+        // Whether the Differentials beside it hold the hit's footprint: set by filter_texture, read
+        // only for rays that carry differentials (which a filter reading footprints gives).
+        bool differentials;
     };
     // Which sample is being shaded: where its further random numbers come from.
     struct SampleContext {
@@ -65,7 +74,15 @@ private:
     struct PacketShadows {
         ShadowQuery query[kPacketLights][kPacketSize] = {};
     };
-    ShadingPoint shading_point(const Ray& ray, const Hit& hit) const;
+    // A ray's differentials and, once it has hit, the surface's there.
+    struct Differentials {
+        RayDifferential ray;
+        SurfaceDifferentials surface;
+    };
+    ShadingPoint shading_point(const Ray& ray, const Hit& hit, Differentials* d = nullptr) const;
+    void filter_texture(ShadingPoint& p, const Hit& hit, Differentials* d) const;
+    // The camera ray's auxiliary rays into `rd` when textures are read over a footprint, else null.
+    const RayDifferential* camera_differential(const Ray& ray, RayDifferential& rd) const;
     static bool faces_light(const ShadingPoint& p, const LightSample& ls);
     static bool query_from_light(const Light& light, const LightSample& ls, const glm::vec3& start);
     // (light_sample, through_glass and secondary_direction are inline: called per light and
@@ -74,12 +91,13 @@ private:
                                     bool centred, const SampleContext& ctx) const;
     template <class Recorder>
     glm::vec3 shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight, const SampleContext& ctx,
-                       RayCounts& counts, const PacketShadows* shadows, int lane, Recorder& rec) const;
+                       RayCounts& counts, const PacketShadows* shadows, int lane, Recorder& rec,
+                       const Differentials* d = nullptr) const;
     inline glm::vec3 through_glass(const LightSample& ls, const glm::vec3& start) const;
     glm::vec3 shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start) const;
     template <class Recorder>
     glm::vec3 trace(const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx, RayCounts& counts,
-                    Recorder& rec) const;
+                    Recorder& rec, const RayDifferential* rd = nullptr) const;
     // The direction of a reflected or refracted ray: the ideal one, or with gloss one drawn from
     // the lobe around it (false: it fell on the wrong side of the surface and carries nothing).
     inline bool secondary_direction(const glm::vec3& ideal, const glm::vec3& n, bool above, float gloss,
@@ -88,6 +106,8 @@ private:
     int max_depth_;
     Conventions conventions_;
     bool variant_;  // conventions_.any(): camera rays one at a time, where the switches are read
+    TextureFilter filter_ = TextureFilter::Bilinear;
+    float pitch_ = 0.0f;  // > 0: camera rays carry differentials this far apart on the plane at 1
 };
 
 // Distance by which secondary rays leave a surface, relative to the point's magnitude so that

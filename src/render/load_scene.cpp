@@ -12,6 +12,7 @@
 #include "flatten/flatten.h"
 #include "integrator/path_integrator.h"
 #include "mesh/mesh_loader.h"
+#include "texture/texture_filter.h"
 
 namespace whitted {
 namespace {
@@ -57,7 +58,11 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
                                                  &result.texture_paths);
     result.stats.texture_seconds = since(t);
     if (has_errors(result.diagnostics) || cancelled()) return result;
-    for (const TextureImage& image : flat.scene.textures) left -= std::min(left, image.rgb.size());
+    for (const TextureImage& image : flat.scene.textures)
+        left -= std::min(left, stored_texture_bytes(image.width, image.height, textures.limits));
+    if (textures.limits.mip_levels)  // once per texture, however many objects use it
+        for (const TextureImage& image : flat.scene.textures)
+            flat.scene.texture_levels.push_back(build_mip_levels(image));
     // Meshes (§9.3) are looked up where textures are, through the same door, in what memory is left.
     MeshOptions meshes;
     meshes.search_dirs = options.textures.search_dirs;

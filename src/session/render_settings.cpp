@@ -135,6 +135,11 @@ const std::vector<Setting>& render_settings_table() {
          &S::aov_file, 0, 0, {}, false, kMpi | kViewer,
          "whitted-mpi does not gather per-term images from its ranks yet; render them with whitted",
          "whitted-view shows the image only; write per-term images with whitted --aov"},
+        {"texture-filter", "Texture filter",
+         "How textures are read: bilinear (the lab's rule, the default), nearest (the texel under the point: the "
+         "Brown/Tufts renderer's blocky look), trilinear or ewa (over what a pixel covers, from mip-maps and ray "
+         "differentials: no shimmer on floors receding to the horizon at one sample per pixel; see docs/textures.md)",
+         &S::texture_filter, 0, 0, {"nearest", "bilinear", "trilinear", "ewa"}, true},
     };
     return table;
 }
@@ -188,6 +193,10 @@ std::string validate(RenderSettings& s) {
                std::string(s.is_given("noise-threshold") ? "--noise-threshold" : "--aa-threshold (with --spp > 1, the "
                                                                                   "noise threshold)") +
                ", or without a checkpoint";
+    if (s.texture_filter != "bilinear" && s.mode != "whitted")
+        return "--texture-filter " + s.texture_filter +
+               " is for whitted mode: path mode's many samples per pixel already average a texture over each "
+               "pixel (a filter on top would only blur it), and the debug views show the texture as it is";
     if (!s.aov_file.empty() && s.aov.empty()) return "--aov-file names where --aov's layers go: give --aov too";
     if (!s.aov.empty()) {
         const std::vector<std::string> names = split_aov_list(s.aov);
@@ -250,6 +259,10 @@ RenderJob make_render_job(const RenderSettings& s) {
     job.sampling.seed = std::uint32_t(s.seed);
     job.threads = s.threads;
     job.aovs = split_aov_list(s.aov);
+    job.integrator.texture_filter = parse_texture_filter(s.texture_filter).value_or(TextureFilter::Bilinear);
+    // Samples closer than a pixel see a smaller footprint (as pbrt-v4 scales its differentials).
+    job.integrator.texture_sample_rows =
+        float(s.height) * std::min(8.0f, float(s.aa) * std::sqrt(float(s.spp)));
     return job;
 }
 
@@ -278,6 +291,7 @@ LoadOptions make_load_options(const RenderSettings& s, std::size_t image_bytes) 
     lo.textures.missing = s.missing_textures == "checker" ? MissingTexturePolicy::Checker : MissingTexturePolicy::Error;
     const std::size_t limit = memory_limit(s);
     lo.max_memory = limit - std::min(limit, image_bytes);
+    lo.textures.limits.mip_levels = uses_footprint(parse_texture_filter(s.texture_filter).value_or(TextureFilter::Bilinear));
     if (s.untrusted) apply_untrusted(lo);
     return lo;
 }

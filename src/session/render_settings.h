@@ -47,6 +47,7 @@ struct RenderSettings {
     float photon_radius = 0.0f;  // their first gather radius (0 = from the scene's size)
     std::string aov;       // per-term images to write beside the image (render/aov.h); "" = none
     std::string aov_file;  // where: an .exr for one multi-layer file, else NAME.LAYER.png beside it
+    std::string texture_filter = "bilinear";  // texture/texture_filter.h
 
     std::set<std::string> given;
     bool is_given(std::string_view name) const { return given.count(std::string(name)) != 0; }

@@ -1,4 +1,5 @@
 #include "texture/texture_decode.h"
+#include "texture/texture_filter.h"
 
 #include <algorithm>
 #include <cctype>
@@ -83,6 +84,10 @@ bool decoded_past_the_end(std::string_view bytes, const unsigned char* data, int
 
 }  // namespace
 
+std::size_t stored_texture_bytes(int width, int height, const TextureLimits& limits) {
+    return std::size_t(width) * std::size_t(height) * 3 + (limits.mip_levels ? mip_levels_bytes(width, height) : 0);
+}
+
 std::string decode_texture(std::string_view bytes, const TextureLimits& limits, TextureImage& out) {
     if (bytes.size() > std::size_t(INT_MAX)) return "the file is too large";
     if (const char* format = undocumented_format(bytes); format && !(limits.gif && starts_with(bytes, "GIF8")))
@@ -106,8 +111,9 @@ std::string decode_texture(std::string_view bytes, const TextureLimits& limits, 
     const std::size_t texels = std::size_t(w) * std::size_t(h);
     if (texels > limits.max_texels)
         return dims + " texels: more than the limit of " + std::to_string(limits.max_texels) + " texels";
-    if (texels * 3 > limits.max_total_bytes)
-        return dims + " texels need " + describe_bytes(texels * 3) + ", more than the " +
+    if (const std::size_t stored = stored_texture_bytes(w, h, limits); stored > limits.max_total_bytes)
+        return dims + " texels need " + describe_bytes(stored) + (limits.mip_levels ? " with their mip-map" : "") +
+               ", more than the " +
                describe_bytes(limits.max_total_bytes) + " left for textures";
     if (const std::uint64_t promised = promised_bytes(bytes); promised > bytes.size())
         return "the file ends before its last pixel (truncated: " + std::to_string(bytes.size()) + " of " +

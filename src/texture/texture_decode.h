@@ -18,7 +18,13 @@ struct TextureLimits {
     // GIF (its first frame) is decoded only for the textures of CSCI 1230 files (scene-format.md
     // §9.5: their course's renderer reads it, and the course ships one); refused otherwise (§8).
     bool gif = false;
+    // Each texture's mip-map pyramid (texture_filter.h, for --texture-filter trilinear or ewa)
+    // is stored beside it, and counts in max_total_bytes too.
+    bool mip_levels = false;
 };
+
+// What a decoded texture takes in memory under `limits`: its texels, and its pyramid if kept.
+std::size_t stored_texture_bytes(int width, int height, const TextureLimits& limits);
 
 // Decodes PNG, BMP, TGA, binary PNM (P5/P6) and, with limits.gif, GIF with stb_image, JPEG with libjpeg (jpeg_decode.h),
 // plain PPM (P3) with ascii_ppm.h, into 8-bit RGB; alpha is dropped. Returns ""

@@ -167,7 +167,7 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
                 TextureImage img;
                 const std::string_view bytes(reinterpret_cast<const char*>(f->second.data()), f->second.size());
                 if (std::string problem = decode_texture(bytes, left, img); problem.empty()) {
-                    left.max_total_bytes -= img.rgb.size();
+                    left.max_total_bytes -= stored_texture_bytes(img.width, img.height, left);
                     index = int(scene.textures.size());
                     scene.textures.push_back(std::move(img));
                 } else {
@@ -230,7 +230,7 @@ std::vector<MissingTexture> load_textures(FlattenResult& flat, const std::string
                 if (reason.empty()) reason = why;
                 continue;
             }
-            left.max_total_bytes -= img.rgb.size();
+            left.max_total_bytes -= stored_texture_bytes(img.width, img.height, left);
             index = int(scene.textures.size());
             scene.textures.push_back(std::move(img));
             index_of_file[key] = index;
