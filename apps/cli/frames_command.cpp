@@ -1,0 +1,100 @@
+#include "frames_command.h"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include "accel/scene.h"
+#include "film/image_io.h"
+#include "interrupt.h"
+#include "load_report.h"
+#include "progress.h"
+#include "render/load_scene.h"
+#include "session/frame_sequence.h"
+#include "session/image_text.h"
+#include "session/session.h"
+
+namespace whitted::cli {
+namespace {
+
+// The frame's image to `path`: .exr and .pfm linear, the 8-bit formats through the view transform.
+std::string write_frame(const Session& session, const RenderSettings& s, const std::string& path) {
+    const ImageText text =
+        render_image_text(s, session.samples_done(), session.passes_done(), int(session.pass_ends().size()));
+    if (is_linear_output(path)) {
+        LinearImage image = session.film().to_linear();
+        image.text = text;
+        return write_linear_image(image, path);
+    }
+    Image image = session.film().to_image(view_transform(s));
+    image.text = text;
+    return write_image(image, path);
+}
+
+}  // namespace
+
+int render_frames(const RenderOptions& given) {
+    RenderOptions o = given;
+    const FrameRange range = *parse_frame_range(o.settings.frames);  // validated with the settings
+    if (std::string problem = output_unwritable(frame_path(o.output, range.first)); !problem.empty()) {
+        std::cerr << "whitted: error: " << problem << "\n";
+        return kExitIo;
+    }
+    install_interrupt_handler();
+    const Deadline deadline(timeout_seconds(o.settings));
+    LoadResult loaded;
+    bool hinted = false;
+    for (int n = range.first; n <= range.last; ++n) {
+        const std::string path = frame_path(o.output, n);
+        std::error_code ec;
+        if (std::filesystem::exists(path, ec)) {
+            std::cerr << "whitted: frame " << n << ": " << path << " exists, skipped\n";
+            continue;
+        }
+        o.settings.time = frame_time(n, o.settings.fps);
+        if (!loaded.ok() || loaded.stats.moves) {
+            const bool first = !loaded.ok();
+            loaded = load_scene(o.scene_path, load_options(o, &interrupt_flag()));
+            // The warnings once; a later load fails only as the first did not (a file changed meanwhile).
+            if (first || !loaded.ok())
+                if (int code = report_load(loaded, o, "whitted", deadline.timed_out() ? "--timeout" : nullptr);
+                    code != kExitOk)
+                    return code;
+        }
+        const RenderJob job = render_job(o, &interrupt_flag());
+        if (const std::string hint = sampled_effects_hint(loaded.stats.effects, job.sampling, job.integrator.mode);
+            !hint.empty() && !hinted) {
+            std::cerr << "whitted: note: " << hint << "\n";
+            hinted = true;
+        }
+        Session session(loaded.scene, job);
+        ProgressLine progress(job.tile_count() * int(session.pass_ends().size()), !o.quiet && isatty(STDERR_FILENO));
+        RenderStats last;
+        while (!session.done()) {
+            last = session.render_pass([&](const Tile&, const Film&) { progress.tile_done(); }).render;
+            if (last.cancelled) break;
+        }
+        progress.finish();
+        // An unfinished frame writes nothing: its file must not exist for the next run to render it.
+        if (last.cancelled) {
+            std::cerr << "whitted: " << (deadline.timed_out() ? "error: the time limit (--timeout) ran out" : "interrupted")
+                      << " in frame " << n << ": " << path << " not written (run the same command again to go on)\n";
+            return deadline.timed_out() ? kExitTimeout : kExitInterrupted;
+        }
+        if (o.stats) {
+            RenderStats total = last;
+            total.rays = session.rays();
+            total.seconds = session.seconds();
+            print_stats(loaded.stats, total, session.samples_done(), session.passes_done());
+        }
+        if (const std::string err = write_frame(session, o.settings, path); !err.empty()) {
+            std::cerr << "whitted: error: " << err << "\n";
+            return kExitIo;
+        }
+        if (!o.quiet) std::cerr << "wrote " << path << "\n";
+    }
+    return kExitOk;
+}
+
+}  // namespace whitted::cli
