@@ -56,6 +56,13 @@ int render_frames(const RenderOptions& given) {
         if (!loaded.ok() || loaded.stats.moves) {
             const bool first = !loaded.ok();
             loaded = load_scene(o.scene_path, load_options(o, &interrupt_flag()));
+            if (!first && loaded.cancelled) {  // the frames before this one are written
+                std::cerr << "whitted: "
+                          << (deadline.timed_out() ? "error: the time limit (--timeout) ran out" : "interrupted")
+                          << " before frame " << n << ": " << path
+                          << " not written (run the same command again to go on)\n";
+                return deadline.timed_out() ? kExitTimeout : kExitInterrupted;
+            }
             // The warnings once; a later load fails only as the first did not (a file changed meanwhile).
             if (first || !loaded.ok())
                 if (int code = report_load(loaded, o, "whitted", deadline.timed_out() ? "--timeout" : nullptr);

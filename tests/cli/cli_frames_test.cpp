@@ -1,5 +1,6 @@
 // whitted --frames A..B --fps F: numbered images, frame n the scene at time n / F (docs/animation.md),
 // frames already written skipped.
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -82,6 +83,39 @@ TEST(CliFrames, FramesThatExistAreSkipped) {
     ASSERT_EQ(again.exit_code, 0) << again.output;
     EXPECT_EQ(fs::last_write_time(dir + "/seq.0010.png"), before);
     EXPECT_NE(again.output.find("frame 12: "), std::string::npos) << again.output;
+}
+
+// A sequence stopped by --timeout keeps the frames it finished and no part of the one it was in;
+// the same command run again renders only what is missing.
+TEST(CliFrames, AnInterruptedSequenceGoesOnWhereItStopped) {
+    const std::string dir = test::make_temp_dir();
+    const std::string scene = write_file(dir, "m.sc", scene_with("velocity 0.01 0 0"));
+    const auto r = run_process(command(scene, dir + "/s.png", {"--frames", "0..999999", "--timeout", "0.5"}));
+    ASSERT_EQ(r.exit_code, 4) << r.output;  // a million frames do not fit in half a second
+    EXPECT_NE(r.output.find("not written (run the same command again to go on)"), std::string::npos) << r.output;
+    auto frame = [&](int n) {
+        char name[32];
+        std::snprintf(name, sizeof name, "/s.%04d.png", n);
+        return dir + name;
+    };
+    int written = 0;
+    while (fs::exists(frame(written))) ++written;
+    // Only finished frames, numbered from the first, each a whole image; no other frame file.
+    std::size_t files = 0;
+    for (const auto& e : fs::directory_iterator(dir)) files += e.path().extension() == ".png";
+    EXPECT_EQ(files, std::size_t(written));
+    for (int n = 0; n < written; ++n) {
+        Image image;
+        EXPECT_EQ(read_image(frame(n), image), "") << frame(n);
+    }
+    const std::string last = std::to_string(written + 1);
+    const auto again = run_process(command(scene, dir + "/s.png", {"--frames", "0.." + last}));
+    ASSERT_EQ(again.exit_code, 0) << again.output;
+    std::size_t skipped = 0;
+    for (std::size_t at = 0; (at = again.output.find("exists, skipped", at)) != std::string::npos; ++at) ++skipped;
+    EXPECT_EQ(skipped, std::size_t(written));
+    EXPECT_TRUE(fs::exists(frame(written)));
+    EXPECT_TRUE(fs::exists(frame(written + 1)));
 }
 
 TEST(CliFrames, NumbersBeyondFourDigitsAndLinearOutput) {
