@@ -13,6 +13,7 @@
 #include "film/image_io.h"
 #include "compare_command.h"
 #include "explain_command.h"
+#include "frames_command.h"
 #include "grade_command.h"
 #include "inspect_command.h"
 #include "interrupt.h"
@@ -67,6 +68,11 @@ int run(int argc, char** argv) {
             return kExitUsage;
         }
     }
+    if (pixel && !s.frames.empty()) {
+        std::cerr << "whitted: error: --inspect looks at one image: give it the frame's time with --time (frame n "
+                     "is at n / --fps)\n";
+        return kExitUsage;
+    }
     if (!pixel && (!inspect_outputs.ray_tree_file.empty() || inspect_outputs.json)) {
         std::cerr << "whitted: error: --ray-tree and --json go with --inspect X,Y (the pixel whose rays they give)\n";
         return kExitUsage;
@@ -84,6 +90,8 @@ int run(int argc, char** argv) {
         std::cerr << "whitted: error: " << problem << "\n";
         return kExitIo;
     }
+
+    if (!s.frames.empty()) return render_frames(o);
 
     install_interrupt_handler();  // from here on Ctrl-C stops the load or the render
     const SessionLimits limits(s, start);

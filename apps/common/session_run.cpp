@@ -24,9 +24,8 @@ double budget_of(const RenderSettings& s) {
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-ImageText image_text(const Session& session, const RenderOptions& o) {
-    return render_image_text(o.settings, session.samples_done(), session.passes_done(),
-                             int(session.pass_ends().size()));
+ImageText image_text(const Session& session, const RenderSettings& s) {
+    return render_image_text(s, session.samples_done(), session.passes_done(), int(session.pass_ends().size()));
 }
 
 }  // namespace
@@ -70,6 +69,17 @@ SessionOutcome run_passes(Session& session, const SessionLimits& limits, Session
     return out;
 }
 
+std::string write_session_image(const Session& session, const RenderSettings& s, const std::string& path) {
+    if (is_linear_output(path)) {
+        LinearImage image = session.film().to_linear();
+        image.text = image_text(session, s);
+        return write_linear_image(image, path);
+    }
+    Image image = session.film().to_image(view_transform(s));
+    image.text = image_text(session, s);
+    return write_image(image, path);
+}
+
 int write_session(const Session& session, const SessionOutcome& outcome, const RenderOptions& o,
                   const SessionLimits& limits, const char* program, int timeout_code) {
     const RenderSettings& s = o.settings;
@@ -94,15 +104,9 @@ int write_session(const Session& session, const SessionOutcome& outcome, const R
     std::string err;
     if (!s.aov.empty()) {  // the image and its per-term images (session/aov_output.h)
         const std::string aov_file = complete || s.aov_file.empty() ? s.aov_file : partial_image_path(s.aov_file);
-        err = write_image_with_aovs(session, written, aov_file, image_text(session, o));
-    } else if (is_linear_output(written)) {
-        LinearImage image = session.film().to_linear();
-        image.text = image_text(session, o);
-        err = write_linear_image(image, written);
+        err = write_image_with_aovs(session, written, aov_file, image_text(session, s));
     } else {
-        Image image = session.film().to_image(view_transform(s));
-        image.text = image_text(session, o);
-        err = write_image(image, written);
+        err = write_session_image(session, s, written);
     }
     if (!err.empty()) {
         std::cerr << program << ": error: " << err << "\n";

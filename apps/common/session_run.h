@@ -47,6 +47,10 @@ struct SessionOutcome {
 SessionOutcome run_passes(Session& session, const SessionLimits& limits, SessionCheckpoint& checkpoint,
                           const std::function<void(const Tile&, const Film&)>& on_tile);
 
+// The session's image to `path`: .exr and .pfm keep the linear values, the 8-bit formats get them
+// through the view transform; the settings and the samples reached in the file's text. "" or why not.
+std::string write_session_image(const Session& session, const RenderSettings& s, const std::string& path);
+
 // Writes what the session holds to o.output (complete) or beside it (NAME.partial.EXT), with the
 // per-term images if asked for, and says so after `program`'s name. Returns the exit code:
 // `timeout_code` when a limit ran out before the image was complete.

@@ -112,6 +112,8 @@ struct SceneDescription {
     int root = -1;  // index of `root` in subgraphs
     Dialect dialect = Dialect::Labs;
     LightingModel lighting = LightingModel::Labs;  // how the scene is lit: §7, or CSCI 1230's §9.5
+    // Whether a trans block says `velocity` or `angularrate` (§9.4): the scene differs with the time.
+    bool moves = false;
     // The file that textures and meshes are looked up next to, when not `path` (§9.5: a CSCI 1230
     // file names them relative to the parent of its folder).
     std::string asset_anchor;

@@ -225,6 +225,7 @@ void Parser::parse_trans(const Token& opener, SubgraphDesc& sg) {
         } else if (w == Keyword::Rotate || w == Keyword::Angularrate) {
             // angularrate ax ay az rate: `rotate ax ay az (rate·t)` at scene time t (§9.4).
             const bool rotate = w == Keyword::Rotate;
+            if (!rotate) scene_.moves = true;
             const glm::vec3 axis = vec3(k);
             const float amount = number(k);
             const float degrees = rotate ? amount : amount * time;
@@ -237,6 +238,7 @@ void Parser::parse_trans(const Token& opener, SubgraphDesc& sg) {
         } else if (w == Keyword::Velocity) {
             // velocity x y z: `translate t·x t·y t·z` at scene time t (§9.4).
             const glm::vec3 v = vec3(k);
+            scene_.moves = true;
             if (time != 0) m = m * translation_matrix(time * v);
         } else if (w == Keyword::MatrixRC || w == Keyword::MatrixCR) {
             std::array<float, 16> v{};

@@ -30,6 +30,7 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     result.diagnostics = std::move(parsed.diagnostics);
     result.unlisted_warnings = parsed.unlisted_warnings;
     result.stats.dialect = parsed.scene.dialect;
+    result.stats.moves = parsed.scene.moves;
     result.camera = parsed.scene.camera;
     if (has_errors(result.diagnostics) || cancelled()) return result;
 

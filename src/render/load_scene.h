@@ -45,6 +45,7 @@ struct LoadStats {
     std::size_t objects = 0, lights = 0, textures = 0;
     Dialect dialect = Dialect::Labs;  // which family of files the scene is written in (§9.4)
     SampledEffects effects;           // §9.1 effects, which one sample per pixel does not show
+    bool moves = false;               // velocity or angularrate (§9.4): another LoadOptions::time gives another scene
 };
 
 struct LoadResult {

@@ -7,6 +7,7 @@
 #include "cs1230/stage.h"
 #include "integrator/render_mode.h"
 #include "render/aov.h"
+#include "session/frame_sequence.h"
 #include "session/run_limits.h"
 
 namespace whitted {
@@ -20,9 +21,35 @@ constexpr const char* kViewerRendersUntilStopped =
     "whitted-view renders passes over every pixel until you stop it (Esc); adaptive sampling and time limits "
     "are whitted's";
 
+// A sequence of files is a batch job; the viewer shows one image at a scene time of its own.
+constexpr const char* kFramesRefusal =
+    "whitted-mpi renders one image across its ranks and does not yet distribute frames; render a sequence "
+    "with whitted --frames A..B";
+constexpr const char* kViewerShowsOneFrame =
+    "whitted-view shows one image (set its scene time with Ctrl+T); write a sequence with whitted --frames A..B";
+
 constexpr const char* kViewerKeepsNoCheckpoint =
     "whitted-view renders passes until you stop it and keeps no checkpoint; a long render to a file is "
     "whitted's (whitted SCENE -o OUT --checkpoint FILE, then --resume FILE)";
+
+// --frames and what does not go with it: each frame's time comes from its number, and a frame is
+// one whole render to its own file (continued by skipping the files written, not by a checkpoint).
+std::string frames_problem(const RenderSettings& s) {
+    if (s.frames.empty()) {
+        if (s.is_given("fps")) return "--fps is the frame rate of --frames A..B: give --frames too";
+        return "";
+    }
+    if (!parse_frame_range(s.frames))
+        return "--frames " + s.frames + " is not a range of frame numbers A..B (0 <= A <= B <= " +
+               std::to_string(kMaxFrame) + ")";
+    if (s.is_given("time")) return "--time and --frames: each frame's time is its number / --fps";
+    if (!s.checkpoint.empty() || !s.resume.empty())
+        return "--frames keeps no checkpoint: an interrupted sequence goes on by skipping the frames already "
+               "written (run the same command again)";
+    if (!s.aov.empty()) return "--aov with --frames is not supported yet: render the layers of one frame with --time";
+    if (s.time_limit > 0) return "--time-limit is a budget for one image, not for --frames: use --timeout";
+    return "";
+}
 
 }  // namespace
 
@@ -72,6 +99,15 @@ const std::vector<Setting>& render_settings_table() {
          "Scene time t: 'velocity x y z' moves by t·(x, y, z), 'angularrate ax ay az r' turns by r·t degrees (0 = "
          "the still image)",
          &S::time, -1e30, 1e30, {}, true},
+        // Each frame's pixels depend on its time, which the checkpoint does not keep: a sequence
+        // takes no checkpoint (validate), and frames already written are skipped instead.
+        {"frames", "Frames",
+         "Render the frames A..B of the animation (velocity, angularrate) as numbered images NAME.000A.EXT … "
+         "NAME.000B.EXT beside the output, frame n at scene time n / --fps; the scene is read once; a frame whose "
+         "file exists is skipped (so an interrupted sequence goes on where it stopped)",
+         &S::frames, 0, 0, {}, false, kMpi | kViewer, kFramesRefusal, kViewerShowsOneFrame},
+        {"fps", "Frames per second", "With --frames: frames per unit of scene time (frame n is at time n / fps)",
+         &S::fps, 1e-6, 1e6, {}, false, kMpi | kViewer, kFramesRefusal, kViewerShowsOneFrame},
         {"threads", "Threads", "Worker threads (0 = all hardware threads)", &S::threads, 0, 1024, {}, false},
         {"lenient", "Lenient", "Skip unknown keywords and object types with a warning instead of failing",
          &S::lenient, 0, 0, {}, true},
@@ -197,6 +233,7 @@ std::string validate(RenderSettings& s) {
         return "--texture-filter " + s.texture_filter +
                " is for whitted mode: path mode's many samples per pixel already average a texture over each "
                "pixel (a filter on top would only blur it), and the debug views show the texture as it is";
+    if (std::string problem = frames_problem(s); !problem.empty()) return problem;
     if (!s.aov_file.empty() && s.aov.empty()) return "--aov-file names where --aov's layers go: give --aov too";
     if (!s.aov.empty()) {
         const std::vector<std::string> names = split_aov_list(s.aov);

@@ -31,6 +31,8 @@ struct RenderSettings {
     int seed = 0;
     std::string view = "linear";  // the mode's default unless given: srgb in path mode
     float time = 0.0f;
+    std::string frames;  // "A..B": numbered images NAME.000A.EXT … (session/frame_sequence.h); "" = one image
+    float fps = 24.0f;   // frame n is at scene time n / fps
     int threads = 0;
     bool lenient = false;
     std::string missing_textures = "error";

@@ -26,6 +26,8 @@ std::string other_value(const Setting& s) {
     // The checkpoint comes before the resume in the table: the resume reads the file it made.
     if (name == "checkpoint" || name == "resume") return "/tmp/whitted-settings-test.ckpt";
     if (name == "aov") return "depth";
+    if (name == "frames") return "1..2";
+    if (name == "fps") return "30";
     if (name == "aov-file") return "/tmp/whitted-settings-test-layers.png";
     if (!s.choices.empty()) return s.choices.back();  // the defaults come first
     if (std::holds_alternative<bool RenderSettings::*>(s.field)) return "";
@@ -117,6 +119,7 @@ TEST(RenderSettings, EveryFrontEndTakesEverySettingOrRefusesItWithAReason) {
         if (std::string(setting.name) != "height") args.insert(args.end(), {"--height", "6"});
         std::vector<std::string> whitted = args;  // --aov-file names where --aov's layers go
         if (std::string(setting.name) == "aov-file") whitted.insert(whitted.end(), {"--aov", "depth"});
+        if (std::string(setting.name) == "fps") whitted.insert(whitted.end(), {"--frames", "1..2"});
         const auto r = test::run_process(whitted);
         EXPECT_EQ(r.exit_code, 0) << r.output;
 #ifdef WHITTED_VIEWER_PATH
@@ -144,6 +147,8 @@ TEST(RenderSettings, EveryFrontEndTakesEverySettingOrRefusesItWithAReason) {
 #endif
     }
     std::remove("/tmp/whitted-settings-test.png");
+    for (const char* frame : {"/tmp/whitted-settings-test.0001.png", "/tmp/whitted-settings-test.0002.png"})
+        std::remove(frame);
     std::remove("/tmp/whitted-settings-test.ckpt");
     std::remove("/tmp/whitted-settings-test.depth.png");
     std::remove("/tmp/whitted-settings-test-layers.depth.png");

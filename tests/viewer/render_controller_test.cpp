@@ -389,7 +389,8 @@ TEST(RenderController, ManyQuickRestartsEndCleanly) {
     auto scene = busy_scene();
     for (int i = 0; i < 20; ++i) c.start(scene, heavy_settings());
     c.stop();
-    EXPECT_TRUE(c.wait_all_threads(2s));
+    // Generous: a loaded machine can hold a thread off the CPU for seconds; one that never ends fails.
+    EXPECT_TRUE(c.wait_all_threads(30s));
     EXPECT_EQ(c.status().job, 20u);
 }
 
