@@ -56,6 +56,9 @@ int run(int argc, char** argv) {
     // Test-only (hidden): Ctrl-C as the Nth tile of the render finishes, at a known place.
     int interrupt_after_tiles = 0;
     app.add_option("--test-interrupt-after-tiles", interrupt_after_tiles)->group("");
+    // Test-only (hidden): Ctrl-C as the load starts (a test timing a signal against the load raced it).
+    bool interrupt_at_load = false;
+    app.add_flag("--test-interrupt-at-load", interrupt_at_load)->group("");
     if (int code = parse_render_options(app, o, argc, argv, "whitted", Frontend::Cli); code != kExitOk)
         return code < 0 ? 0 : code;
     const RenderSettings& s = o.settings;
@@ -96,6 +99,7 @@ int run(int argc, char** argv) {
     install_interrupt_handler();  // from here on Ctrl-C stops the load or the render
     const SessionLimits limits(s, start);
     std::uint64_t inputs = 0;
+    if (interrupt_at_load) std::raise(SIGINT);
     LoadResult loaded = load_scene_and_inputs(o, &interrupt_flag(), inputs);
     if (int code = report_load(loaded, o, "whitted", limits.ran_out()); code != kExitOk) return code;
 

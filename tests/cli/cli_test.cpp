@@ -356,30 +356,18 @@ TEST(Cli, ProgressLineOnlyOnATerminal) {
     EXPECT_EQ(tty_quiet.output.find("rendering"), std::string::npos) << tty_quiet.output;
 }
 
+// Ctrl-C during the load: nothing is rendered or written. The signal comes as the load starts (a
+// hidden test option): a signal timed against the load's length raced it on a fast machine.
 TEST(Cli, InterruptWhileLoadingWritesNothing) {
     std::string dir = test::make_temp_dir();
     std::string scene = write_file(dir, "big.sc", million_spheres());
     std::string out = dir + "/big.png";
-    // When to interrupt: between the handler's installation (the start-up, as long as --version
-    // takes) and the end of the load (as --stats reports it, on this machine and build).
-    using Clock = std::chrono::steady_clock;
-    auto t0 = Clock::now();
-    ASSERT_EQ(run_process({test::cli_path(), "--version"}).exit_code, 0);
-    const double startup = std::chrono::duration<double>(Clock::now() - t0).count();
-    auto full = run_process({test::cli_path(), scene, "-o", dir + "/full.png", "-q", "--stats", "--width", "8",
-                             "--height", "8"});
-    ASSERT_EQ(full.exit_code, 0) << full.output;
-    double parse = 0, flatten = 0, textures = 0, build = 0;
-    ASSERT_EQ(std::sscanf(full.output.c_str() + full.output.find("parse "),
-                          "parse %lfs, flatten %lfs, textures %lfs, build %lfs", &parse, &flatten, &textures, &build),
-              4)
-        << full.output;
-    const double load_end = startup + parse + flatten + textures + build;
-    ASSERT_GT(load_end - startup, 0.05) << "the load should take a while";
-    auto r = run_process({test::cli_path(), scene, "-o", out, "-q", "--stats"}, int(1000 * (startup + load_end) / 2));
+    auto r = run_process({test::cli_path(), scene, "-o", out, "-q", "--stats", "--test-interrupt-at-load"});
     EXPECT_EQ(r.exit_code, 130) << r.output;
     EXPECT_NE(r.output.find("interrupted while loading"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("render "), std::string::npos) << "nothing rendered: " << r.output;
     EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(dir + "/big.partial.png"));
 }
 
 TEST(Cli, ASecondInterruptExitsAtOnceAndLeavesNoPartialFile) {
