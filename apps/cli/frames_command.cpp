@@ -65,24 +65,16 @@ int render_frames(const RenderOptions& given) {
         const SessionOutcome outcome =
             run_passes(session, limits, none, [&](const Tile&, const Film&) { progress.tile_done(); });
         progress.finish();
-        const RenderStats& last = outcome.last;
-        // An unfinished frame writes nothing: its file must not exist for the next run to render it.
-        if (!outcome.complete) {
-            std::cerr << "whitted: " << (limits.timed_out() ? "error: the time limit (--timeout) ran out" : "interrupted")
-                      << " in frame " << n << ": " << path << " not written (run the same command again to go on)\n";
-            return limits.timed_out() ? kExitTimeout : kExitInterrupted;
-        }
-        if (o.stats) {
-            RenderStats total = last;
+        if (o.stats && outcome.complete) {
+            RenderStats total = outcome.last;
             total.rays = session.rays();
             total.seconds = session.seconds();
             print_stats(loaded.stats, total, session.samples_done(), session.passes_done());
         }
-        if (const std::string err = write_session_image(session, o.settings, path); !err.empty()) {
-            std::cerr << "whitted: error: " << err << "\n";
-            return kExitIo;
-        }
-        if (!o.quiet) std::cerr << "wrote " << path << "\n";
+        RenderOptions frame = o;
+        frame.output = path;
+        if (const int code = write_frame(session, outcome, frame, limits, n, "whitted", kExitTimeout); code != kExitOk)
+            return code;
     }
     return kExitOk;
 }

@@ -138,4 +138,20 @@ int write_session(const Session& session, const SessionOutcome& outcome, const R
     return kExitOk;
 }
 
+int write_frame(const Session& session, const SessionOutcome& outcome, const RenderOptions& o,
+                const SessionLimits& limits, int frame, const char* program, int timeout_code) {
+    if (!outcome.complete) {
+        std::cerr << program << ": " << (limits.timed_out() ? "error: the time limit (--timeout) ran out" : "interrupted")
+                  << " in frame " << frame << ": " << o.output
+                  << " not written (run the same command again to go on)\n";
+        return limits.timed_out() ? timeout_code : kExitInterrupted;
+    }
+    if (const std::string err = write_session_image(session, o.settings, o.output); !err.empty()) {
+        std::cerr << program << ": error: " << err << "\n";
+        return kExitIo;
+    }
+    if (!o.quiet) std::cerr << "wrote " << o.output << "\n";
+    return kExitOk;
+}
+
 }  // namespace whitted::cli

@@ -57,4 +57,10 @@ std::string write_session_image(const Session& session, const RenderSettings& s,
 int write_session(const Session& session, const SessionOutcome& outcome, const RenderOptions& o,
                   const SessionLimits& limits, const char* program, int timeout_code);
 
+// Frame `frame` of --frames after its passes, to o.output: written only whole, for a frame's file is
+// what tells the next run of the same command that it is done. The exit code (`timeout_code` when
+// --timeout ran out).
+int write_frame(const Session& session, const SessionOutcome& outcome, const RenderOptions& o,
+                const SessionLimits& limits, int frame, const char* program, int timeout_code);
+
 }  // namespace whitted::cli

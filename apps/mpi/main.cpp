@@ -1,4 +1,5 @@
-// whitted-mpi: one image rendered across the ranks of an MPI job (Open MPI, Slurm).
+// whitted-mpi: one image (or the frames of --frames, one by one) rendered across the ranks of an
+// MPI job (Open MPI, Slurm).
 //   mpirun -np N whitted-mpi SCENE -o OUT [every option of whitted] [--tile-size N]
 //          [--checkpoint FILE [--checkpoint-every S]] [--resume FILE]
 // The image is byte-identical to `whitted SCENE -o OUT` with the same options. Exit codes as
@@ -11,29 +12,15 @@
 #include <optional>
 #include <thread>
 
-#include "accel/scene.h"
-#include "session/checkpoint.h"
+#include "image_job.h"
 #include "interrupt.h"
-#include "load_report.h"
-#include "ranks.h"
 #include "render_options.h"
-#include "scene_share.h"
-#include "base/parallel_for.h"
 
 namespace {
 
 using namespace whitted;
 using namespace whitted::cli;
 using namespace whitted::mpi;
-
-struct MpiOptions {
-    int tile_size = 32;
-    double grace = 0.5;
-    std::uint64_t schedule_seed = 0;
-    bool verify = false;
-    TestKnobs knobs;
-    int interrupt_after_tiles = 0;
-};
 
 void add_mpi_options(CLI::App& app, MpiOptions& m) {
     app.add_option("--tile-size", m.tile_size, "Tile size in pixels: the unit handed to ranks and checkpointed")
@@ -90,61 +77,17 @@ int run(int argc, char** argv, int rank, int ranks) {
     // --timeout (and --untrusted's 60 s) and --time-limit: rank 0 stops the job as a first Ctrl-C would.
     std::optional<SessionLimits> limits;
     if (rank == 0) limits.emplace(o.settings, start);
-    SharedScene shared = share_scene(o, rank, &interrupt_flag(), limits ? &*limits : nullptr);
+    ImageJob job;
+    job.options = &o;
+    job.mpi = &m;
+    job.rank = rank;
+    job.ranks = ranks;
+    job.limits = limits ? &*limits : nullptr;
+    job.start = start;
+    if (!o.settings.frames.empty()) return render_frames(job);
+    const SharedScene shared = share_scene(o, rank, &interrupt_flag(), job.limits);
     if (shared.code != 0) return shared.code;
-
-    // A checkpoint is never written over what the job reads or writes (--checkpoint scene.sc
-    // destroyed the scene): rank 0, which reads and writes them, decides for all.
-    int refused = 0;
-    const std::string& checkpoint = o.settings.checkpoint;
-    if (rank == 0 && !checkpoint.empty()) {
-        std::vector<std::string> inputs{o.scene_path};
-        for (const auto* list : {&shared.loaded.texture_paths, &shared.loaded.mesh_paths})
-            inputs.insert(inputs.end(), list->begin(), list->end());
-        for (const std::string& t : o.settings.texture_dirs) inputs.push_back(t);
-        if (std::string problem = checkpoint_conflict(checkpoint, o.output, inputs); !problem.empty()) {
-            std::cerr << "whitted-mpi: error: " << problem << "\n";
-            refused = 1;
-        }
-    }
-    MPI_Bcast(&refused, 1, MPI_INT, 0, MPI_COMM_WORLD);
-    if (refused) return kExitUsage;
-
-    RankSetup s;
-    s.job = render_job(o, nullptr);
-    s.job.tile_size = m.tile_size;
-    const auto integrator =
-        make_integrator(*shared.loaded.scene, s.job.camera_for(*shared.loaded.scene), s.job.integrator);
-    s.integrator = integrator.get();
-    s.grid = {o.settings.width, o.settings.height, m.tile_size};
-    s.rank = rank;
-    s.ranks = ranks;
-    s.threads = worker_count(o.settings.threads, std::size_t(1) << 20);
-    s.job.threads = s.threads;
-    s.knobs = m.knobs;
-    s.interrupted = &interrupt_flag();
-    if (rank != 0) return run_worker(s);
-    s.options = &o;
-    s.limits = &*limits;
-    s.scene = shared.loaded.scene;
-    s.loaded = &shared.loaded;
-    s.inputs = shared.hash;  // with every setting that changes pixels and the tile grid, a checkpoint's key
-    s.job.cancel = &interrupt_flag();
-    s.schedule_seed = m.schedule_seed;
-    s.verify = m.verify;
-    s.grace_seconds = m.grace;
-    s.interrupt_after_tiles = m.interrupt_after_tiles;
-    s.broadcast_bytes = shared.bytes;
-    s.broadcast_seconds = shared.broadcast_seconds;
-    s.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (o.stats) {
-        const auto& ls = shared.loaded.stats;
-        std::fprintf(stderr, "objects %zu, lights %zu, textures %zu; rank 0: parse %.3fs, flatten %.3fs, textures "
-                             "%.3fs, build %.3fs\n",
-                     ls.objects, ls.lights, ls.textures, ls.parse_seconds, ls.flatten_seconds, ls.texture_seconds,
-                     ls.build_seconds);
-    }
-    return run_master(s);
+    return render_image(job, shared);
 }
 
 }  // namespace

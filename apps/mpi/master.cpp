@@ -393,7 +393,9 @@ int run_master(const RankSetup& s) {
         code = kExitMismatch;
     } else {
         // A time limit that ran out exits 130, as a batch system's SIGTERM (4 means two ranks disagreed).
-        code = write_session(session, outcome, o, *s.limits, "whitted-mpi", cli::kExitInterrupted);
+        code = s.frame >= 0 ? cli::write_frame(session, outcome, o, *s.limits, s.frame, "whitted-mpi",
+                                               cli::kExitInterrupted)
+                            : write_session(session, outcome, o, *s.limits, "whitted-mpi", cli::kExitInterrupted);
     }
     if (o.stats) ranks.print_stats(render_wall, s.grid.count() * session.passes_done() + (outcome.complete ? 0 : outcome.last.tiles_done));
     if (!ranks.finish(code)) {  // some rank never finished: MPI_Finalize could wait for it forever

@@ -37,6 +37,7 @@ struct RankSetup {
     bool verify = false;  // every tile rendered by two ranks and compared
     double grace_seconds = 0.5;
     int interrupt_after_tiles = 0;  // test-only: Ctrl-C as the Nth tile of the job is merged
+    int frame = -1;                 // frame n of --frames: written only whole, no checkpoint
     double setup_seconds = 0, broadcast_seconds = 0;
     std::size_t broadcast_bytes = 0;
 };

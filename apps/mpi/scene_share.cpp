@@ -111,7 +111,7 @@ bool same_binary_and_options(int argc, char** argv, int rank, int ranks) {
 }
 
 SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic<bool>* cancel,
-                        const cli::SessionLimits* limits) {
+                        const cli::SessionLimits* limits, bool again) {
     SharedScene s;
     LoadOptions lo = cli::load_options(o, cancel);
     std::vector<char> payload;
@@ -127,7 +127,9 @@ SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic
             s.code = cli::kExitIo;
         } else {
             s.loaded = !file.ok() ? load_scene(o.scene_path, lo) : load_scene_text(file.bytes, o.scene_path, lo);
-            s.code = cli::report_load(s.loaded, o, "whitted-mpi", limits ? limits->ran_out() : nullptr);
+            s.code = again && s.loaded.ok()
+                         ? cli::kExitOk
+                         : cli::report_load(s.loaded, o, "whitted-mpi", limits ? limits->ran_out() : nullptr);
             if (s.code == cli::kExitTimeout) s.code = cli::kExitInterrupted;  // here 4 means two ranks disagreed
         }
         if (s.code == 0) payload = pack(file.bytes, s.loaded.texture_files, s.loaded.mesh_files);

@@ -25,8 +25,9 @@ struct SharedScene {
 };
 
 // Collective: rank 0 loads o.scene_path (reporting its diagnostics once, and that a limit of
-// `limits` ran out if one did), the others build the scene from the broadcast bytes.
+// `limits` ran out if one did), the others build the scene from the broadcast bytes. `again`: the
+// same file read at another time (--frames), whose warnings were said at the first read.
 SharedScene share_scene(const cli::RenderOptions& o, int rank, const std::atomic<bool>* cancel,
-                        const cli::SessionLimits* limits);
+                        const cli::SessionLimits* limits, bool again = false);
 
 }  // namespace whitted::mpi

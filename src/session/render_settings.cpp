@@ -22,9 +22,6 @@ constexpr const char* kViewerRendersUntilStopped =
     "are whitted's";
 
 // A sequence of files is a batch job; the viewer shows one image at a scene time of its own.
-constexpr const char* kFramesRefusal =
-    "whitted-mpi renders one image across its ranks and does not yet distribute frames; render a sequence "
-    "with whitted --frames A..B";
 constexpr const char* kViewerShowsOneFrame =
     "whitted-view shows one image (set its scene time with Ctrl+T); write a sequence with whitted --frames A..B";
 
@@ -105,9 +102,9 @@ const std::vector<Setting>& render_settings_table() {
          "Render the frames A..B of the animation (velocity, angularrate) as numbered images NAME.000A.EXT … "
          "NAME.000B.EXT beside the output, frame n at scene time n / --fps; the scene is read once; a frame whose "
          "file exists is skipped (so an interrupted sequence goes on where it stopped)",
-         &S::frames, 0, 0, {}, false, kMpi | kViewer, kFramesRefusal, kViewerShowsOneFrame},
+         &S::frames, 0, 0, {}, false, kViewer, "", kViewerShowsOneFrame},
         {"fps", "Frames per second", "With --frames: frames per unit of scene time (frame n is at time n / fps)",
-         &S::fps, 1e-6, 1e6, {}, false, kMpi | kViewer, kFramesRefusal, kViewerShowsOneFrame},
+         &S::fps, 1e-6, 1e6, {}, false, kViewer, "", kViewerShowsOneFrame},
         {"threads", "Threads", "Worker threads (0 = all hardware threads)", &S::threads, 0, 1024, {}, false},
         {"lenient", "Lenient", "Skip unknown keywords and object types with a warning instead of failing",
          &S::lenient, 0, 0, {}, true},

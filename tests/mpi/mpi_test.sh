@@ -294,5 +294,34 @@ later_pass_interrupt)
     "$WHITTED" compare "$out/ref.png" "$out/mpi.partial.png" >"$out/cmp" 2>&1
     grep -q "the images are equal" "$out/cmp" || { cat "$out/cmp"; fail "not the pixels of --spp 2"; }
     echo "ok" ;;
+frames)
+    # --frames across the ranks: each frame whitted's bytes (a moving scene, read again at each frame's
+    # time); a frame whose file exists is left alone; Ctrl-C inside a frame writes no part of it, and
+    # the same command run again finishes the sequence.
+    "$WHITTED" "$src/tests/mpi/moving.sc" -o "$out/ref.png" --frames 0..3 --fps 2 "${SIZE[@]}" -q ||
+        fail "whitted --frames"
+    cmp -s "$out/ref.0000.png" "$out/ref.0003.png" && fail "the scene does not move"
+    echo "a frame of an earlier run" >"$out/mpi.0001.png"
+    "${MPIRUN[@]}" -np 3 "$WHITTED_MPI" "$src/tests/mpi/moving.sc" -o "$out/mpi.png" --frames 0..3 --fps 2 \
+        "${SIZE[@]}" --threads 1 --tile-size 16 --test-schedule-seed 3 >"$out/log" 2>&1 ||
+        { cat "$out/log"; fail "whitted-mpi --frames"; }
+    grep -q "frame 1: $out/mpi.0001.png exists, skipped" "$out/log" || { cat "$out/log"; fail "no skip"; }
+    [[ $(cat "$out/mpi.0001.png") == "a frame of an earlier run" ]] || fail "an existing frame was replaced"
+    for n in 0000 0002 0003; do
+        cmp "$out/ref.$n.png" "$out/mpi.$n.png" || fail "frame $n differs from whitted's"
+    done
+    rm "$out"/mpi.*
+    "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$src/tests/mpi/moving.sc" -o "$out/mpi.png" --frames 0..3 --fps 2 \
+        "${SIZE[@]}" --threads 1 --tile-size 16 --test-interrupt-after-tiles 5 >"$out/log" 2>&1
+    rc=$?
+    [[ $rc == 130 ]] || { cat "$out/log"; fail "exit code $rc, not 130"; }
+    grep -q "interrupted in frame 0: $out/mpi.0000.png not written" "$out/log" || { cat "$out/log"; fail "no message"; }
+    ls "$out" | grep -q '^mpi\.' && { ls "$out"; fail "something was written"; }
+    "${MPIRUN[@]}" -np 2 "$WHITTED_MPI" "$src/tests/mpi/moving.sc" -o "$out/mpi.png" --frames 0..3 --fps 2 \
+        "${SIZE[@]}" --threads 1 --tile-size 16 >"$out/log" 2>&1 || { cat "$out/log"; fail "the run again"; }
+    for n in 0000 0001 0002 0003; do
+        cmp "$out/ref.$n.png" "$out/mpi.$n.png" || fail "frame $n differs from whitted's after the run again"
+    done
+    echo "ok" ;;
 *) fail "unknown case $case_name" ;;
 esac
