@@ -9,6 +9,8 @@
 # (from --stats: the work, whatever else the machine does) and CPU seconds (user + system).
 # Uniform sampling's error falls as 1/samples, so the uniform rays for an adaptive run's error are
 # the fitted c / error × rays per sample; their ratio to the adaptive run's rays is its speed-up.
+# EXTRA: more options for every run (e.g. EXTRA="--photons 0": path mode's photon caustics are a
+# consistent but biased estimate whose error does not fall as c / samples, which the fit assumes).
 # Usage: bench/adaptive_bench.sh [BUILD_DIR]   (Release; writes a table to stdout)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -17,9 +19,9 @@ out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
 REF=${REF:-2048}
 MAX=${MAX:-1024}
-THRESHOLDS=${THRESHOLDS:-"0.1 0.05 0.025 0.0125"}
+THRESHOLDS=${THRESHOLDS:-"0.8 0.4 0.2 0.1"}
 SCENES=${SCENES:-"showcase features/cornell_box"}
-SIZE=(--width "${WIDTH:-160}" --height "${HEIGHT:-120}" --mode path --threads 2 -q --stats)
+SIZE=(--width "${WIDTH:-160}" --height "${HEIGHT:-120}" --mode path --threads 2 -q --stats ${EXTRA:-})
 
 # run NAME ARGS...: renders to $out/NAME.pfm; prints "cpu_seconds rays"
 run() {
