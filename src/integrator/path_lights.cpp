@@ -45,6 +45,7 @@ PathLights::PathLights(const Scene& scene) : scene_(scene) {
     std::vector<float> power;
     mesh_sampler_of_.assign(flat.instances.size(), -1);
     cube_of_.assign(flat.instances.size(), -1);
+    sphere_of_.assign(flat.instances.size(), -1);
     for (std::uint32_t i = 0; i < flat.instances.size(); ++i) {
         const glm::vec3& e = scene.material(i).emit;
         if (std::max(e.x, std::max(e.y, e.z)) <= 0.0f) continue;
@@ -63,6 +64,11 @@ PathLights::PathLights(const Scene& scene) : scene_(scene) {
             cube_of_[i] = std::int32_t(cubes_.size());
             cubes_.emplace_back(inst);
         }
+        if (inst.kind == ShapeKind::Sphere)
+            if (const std::optional<SphereLight> sphere = SphereLight::of(inst)) {
+                sphere_of_[i] = std::int32_t(spheres_.size());
+                spheres_.push_back(*sphere);
+            }
         lights_.push_back({std::int32_t(i), -1});
         power.push_back(std::max(1e-12f, luminance(e) * world_area(flat.instances[i]) * kPi));
     }
@@ -105,6 +111,10 @@ AreaLightSample PathLights::sample_area(std::uint32_t instance, const glm::vec3&
         const CubeLight::Sample s = cubes_[std::size_t(c)].sample(x, u);
         return {s.point, s.normal, s.pdf_area};
     }
+    if (const std::int32_t k = sphere_of_[instance]; k >= 0) {
+        const SphereLight::Sample s = spheres_[std::size_t(k)].sample(x, u);
+        return {s.point, s.normal, s.pdf_area};
+    }
     const Instance& inst = scene_.data.instances[instance];
     const ShapeSample s = sample_unit_shape(inst.kind, u);
     const glm::vec3 n_object = unit_shape_normal(inst.kind, s.part, s.p);
@@ -118,6 +128,8 @@ float PathLights::pdf_area(std::uint32_t instance, const glm::vec3& x, const glm
     if (const std::int32_t c = cube_of_[instance]; c >= 0)
         return cubes_[std::size_t(c)].pdf_area(x, CubeLight::face_of(n_object));
     const Instance& inst = scene_.data.instances[instance];
+    if (const std::int32_t k = sphere_of_[instance]; k >= 0)
+        return spheres_[std::size_t(k)].pdf_area(x, normal_to_world(inst, n_object));
     return 1.0f / (unit_shape_area(inst.kind) * area_scale(inst, unit_shape_area_normal(inst.kind, n_object)));
 }
 

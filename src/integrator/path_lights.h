@@ -3,7 +3,7 @@
 // an area light, sampled by area in object space with the density converted through the
 // instance's matrix (exact under any affine map: an object-space area element dA becomes
 // |det M| · |M⁻ᵀ n| dA in the world); a cube only on the faces the shading point can see
-// (integrator/cube_light.h); point, spot and directional lights by next-event estimation only. An emissive mesh (§9.3) is sampled by world triangle area, with the density 1 / its world
+// (integrator/cube_light.h); a round sphere by the cone it subtends (integrator/sphere_light.h); point, spot and directional lights by next-event estimation only. An emissive mesh (§9.3) is sampled by world triangle area, with the density 1 / its world
 // area everywhere on it (mesh/mesh_area_sampler.h, one table per emissive mesh instance). One light
 // is chosen per estimate, in proportion to its power.
 #include <cstdint>
@@ -14,6 +14,7 @@
 #include "accel/scene.h"
 #include "integrator/cube_light.h"
 #include "integrator/mesh_area_sampler.h"
+#include "integrator/sphere_light.h"
 
 namespace whitted {
 
@@ -39,7 +40,8 @@ public:
     float choice_probability(std::uint32_t instance) const;
 
     // A point of the instance's shape to light the shading point x with, and its world-area
-    // density: on a cube, on the faces x can see (CubeLight); on the other unit shapes, uniform by
+    // density: on a cube, on the faces x can see (CubeLight); on a round sphere, in the cone x
+    // sees it in (SphereLight); on the other unit shapes, uniform by
     // object-space area (the ellipsoid's, uniform on the sphere it is mapped from); on a mesh,
     // uniform by world area (u_triangle picks the triangle, u the point in it).
     AreaLightSample sample_area(std::uint32_t instance, const glm::vec3& x, glm::vec2 u, float u_triangle = 0.0f) const;
@@ -58,6 +60,8 @@ private:
     std::vector<std::int32_t> mesh_sampler_of_;  // per instance: into mesh_samplers_, or -1
     std::vector<CubeLight> cubes_;
     std::vector<std::int32_t> cube_of_;  // per instance: into cubes_, or -1
+    std::vector<SphereLight> spheres_;
+    std::vector<std::int32_t> sphere_of_;  // per instance: into spheres_, or -1
 };
 
 }  // namespace whitted
