@@ -171,7 +171,21 @@ FileContents read_regular_file(const std::string& path, std::size_t max_bytes, c
         if (stopped()) return out;
         if (have == out.bytes.size()) {
             if (have >= max_bytes) break;  // one byte more would be over: check that the file ended
-            out.bytes.resize(std::min(max_bytes, have + kChunk));  // the file grew since fstat
+            // The size fstat gave is read: whether the file ended is asked with a small buffer, not
+            // by growing the string, which would copy the whole text into an allocation twice its
+            // size (for a moment both in memory) for a file that nearly always has ended.
+            char probe[4096];
+            const ssize_t n = read(fd.get(), probe, std::min(sizeof probe, max_bytes - have));
+            if (n < 0) {
+                if (errno == EINTR) continue;
+                out.error = std::strerror(errno);
+                return out;
+            }
+            if (n == 0) break;
+            out.bytes.append(probe, std::size_t(n));  // the file grew since fstat
+            have += std::size_t(n);
+            out.bytes.resize(std::min(max_bytes, have + kChunk));
+            continue;
         }
         const ssize_t n = read(fd.get(), out.bytes.data() + have, std::min(kChunk, out.bytes.size() - have));
         if (n < 0) {

@@ -4,6 +4,8 @@
 
 #include <atomic>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -73,6 +75,62 @@ TEST(ObjReader, NegativeIndicesCountBackAndAPentagonMakesThreeTriangles) {
     float shoelace = 0;
     for (int i = 0; i < 5; ++i) shoelace += x[i] * y[(i + 1) % 5] - x[(i + 1) % 5] * y[i];
     EXPECT_NEAR(area, 0.5f * shoelace, 1e-5f);
+}
+
+TEST(ObjReader, FacesBeforeAndAfterOneNamingAVertexFurtherDownKeepTheirOrderAndCorners) {
+    // The first face comes before any vn (its vertices get the normal (0, 0, 0) once the file has
+    // normals), the second names v 4 before it is defined (kept until the file is read, as is every
+    // face after it), the third is a quad by negative indices, split along a diagonal (equal ones:
+    // 0-1-3 and 1-2-3, as tinyobjloader splits), sharing the vertex (v 3, vn 1) with the second.
+    TriangleMesh m;
+    const ObjReadResult r = read_obj_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nvn 0 0 1\nf 1//1 3//1 4//1\n"
+                                          "v 0 1 0\nv 2 0 0\nv 2 1 0\nf -5//1 -2//1 -1//1 -4//1\n",
+                                          "ahead.obj", m);
+    ASSERT_TRUE(r.ok) << r.error;
+    const std::vector<TriangleIndices> triangles{{0, 1, 2}, {3, 4, 5}, {6, 7, 4}, {7, 8, 4}};
+    EXPECT_EQ(std::vector<TriangleIndices>(m.triangles.begin(), m.triangles.end()), triangles);
+    const std::vector<glm::vec3> positions{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0},
+                                           {0, 1, 0}, {1, 0, 0}, {2, 0, 0}, {2, 1, 0}};
+    EXPECT_EQ(std::vector<glm::vec3>(m.positions.begin(), m.positions.end()), positions);
+    const glm::vec3 none(0.0f), up(0, 0, 1);
+    const std::vector<glm::vec3> normals{none, none, none, up, up, up, up, up, up};
+    EXPECT_EQ(std::vector<glm::vec3>(m.normals.begin(), m.normals.end()), normals);
+    EXPECT_TRUE(m.uvs.empty());
+}
+
+TEST(ObjReader, ReadingHoldsNoCopyOfTheFaces) {
+    // A 200 x 200 grid of quads written as 80,000 triangles on 40,401 shared vertices. Beyond the
+    // text and what the mesh keeps (its arrays and its BVH's estimate, r.bytes), reading it needs
+    // the file's v (12 bytes a vertex), a vertex table (about 20 bytes a vertex) and the repeated-
+    // triangle table (8 to 16 bytes a triangle): under 48 bytes a triangle. A copy of every corner
+    // of the faces alone would be 36, and a heap node per vertex 64 more.
+    constexpr int kN = 200;
+    std::string text;
+    for (int j = 0; j <= kN; ++j)
+        for (int i = 0; i <= kN; ++i) text += "v " + std::to_string(i) + " " + std::to_string(j) + " 0\n";
+    for (int j = 0; j < kN; ++j)
+        for (int i = 0; i < kN; ++i) {
+            const std::string a = std::to_string(j * (kN + 1) + i + 1), b = std::to_string(j * (kN + 1) + i + 2),
+                              c = std::to_string((j + 1) * (kN + 1) + i + 2),
+                              d = std::to_string((j + 1) * (kN + 1) + i + 1);
+            text += "f " + a + " " + b + " " + c + "\nf " + a + " " + c + " " + d + "\n";
+        }
+    TriangleMesh m;
+    const ObjReadResult all = read_obj_text(text, "grid.obj", m);
+    ASSERT_TRUE(all.ok) << all.error;
+    ASSERT_EQ(m.triangles.size(), std::size_t(2 * kN * kN));
+    ASSERT_EQ(m.positions.size(), std::size_t((kN + 1) * (kN + 1)));
+    ObjLimits limits;
+    limits.max_bytes = text.size() + all.bytes + 48 * m.triangles.size();
+    const ObjReadResult r = read_obj_text(text, "grid.obj", m, limits);
+    EXPECT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(m.triangles.size(), std::size_t(2 * kN * kN));
+    // Below what the finished mesh needs with the text: refused, with the same message as ever.
+    limits.max_bytes = text.size() + all.bytes - 1;
+    const ObjReadResult small = read_obj_text(text, "grid.obj", m, limits);
+    EXPECT_FALSE(small.ok);
+    EXPECT_NE(small.error.find("the mesh needs more than the"), std::string::npos) << small.error;
+    EXPECT_NE(small.error.find("(--max-memory; a scene's objects, textures and meshes share it)"), std::string::npos);
 }
 
 TEST(ObjReader, DegenerateTrianglesAreSkippedAndCounted) {
