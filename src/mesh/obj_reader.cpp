@@ -1,6 +1,7 @@
 #include "mesh/obj_reader.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -17,44 +18,100 @@
 namespace whitted {
 namespace {
 
-// The text handed to tinyobjloader 64 KiB at a time: between pieces the cancel flag (and a reason
-// of our own to stop) is looked at, and where the parser is in the text is always known, for the
-// line of an error (its callbacks do not say).
+// The text handed to tinyobjloader 64 KiB at a time, from memory or from a file read as it goes
+// (never held whole): between pieces the cancel flag (and a reason of our own to stop) is looked
+// at, and where the parser is in the text is always known, for the line of an error (its
+// callbacks do not say).
 class TextBuffer : public std::streambuf {
 public:
-    TextBuffer(std::string_view text, const std::atomic<bool>* cancel, const bool& stop)
-        : begin_(const_cast<char*>(text.data())), end_(begin_ + text.size()), cancel_(cancel), stop_(stop) {
-        setg(begin_, begin_, begin_);
-    }
-    std::size_t offset() const { return std::size_t(gptr() - begin_); }
+    static constexpr std::size_t kPiece = 64 << 10;
+
+    TextBuffer(std::string_view text, const std::atomic<bool>* cancel) : text_(text), cancel_(cancel) {}
+    TextBuffer(FileReader& file, const std::atomic<bool>* cancel) : file_(&file), piece_(kPiece), cancel_(cancel) {}
+    // The text ends early once `*stop` is set.
+    void stop_when(const bool* stop) { stop_ = stop; }
+    std::size_t offset() const { return piece_start_ + std::size_t(gptr() - eback()); }
     bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
+    // Why the file could not be read to its end ("" if it was, or the text is in memory).
+    std::string read_error() const { return file_ && !file_->info().cancelled ? file_->info().error : std::string(); }
+    // Bytes of the text held in memory: all of it, or the piece read.
+    std::size_t held() const { return file_ ? piece_.size() : text_.size(); }
+
+    // The 1-based line of the text that ends at offset() (just past its line break, as
+    // tinyobjloader leaves the stream after a line; it ends lines at \n, \r\n and a lone \r alike).
+    // Lines are counted from the first time this is asked (a file's pieces before read again),
+    // then as the pieces pass: a file without errors or faces naming later vertices counts none.
+    int line() {
+        if (!counting_) {
+            counting_ = true;
+            if (file_) {
+                const std::size_t resume = file_->position();
+                std::vector<char> before(kPiece);
+                file_->seek(0);
+                for (std::size_t at = 0; at < piece_start_;) {
+                    const std::size_t n = file_->read(before.data(), std::min(kPiece, piece_start_ - at));
+                    if (n == 0) break;  // (the file changed under us: the line is only a hint)
+                    count(before.data(), before.data() + n);
+                    at += n;
+                }
+                file_->seek(resume);
+            } else {
+                count(text_.data(), text_.data() + piece_start_);
+            }
+            counted_ = eback();
+        }
+        count(counted_, gptr());
+        counted_ = gptr();
+        return int(lines_ + (pending_cr_ ? 1 : 0) + (last_ == '\n' || last_ == '\r' ? 0 : 1));
+    }
 
 protected:
     int_type underflow() override {
         if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
-        if (stop_ || cancelled() || egptr() == end_) return traits_type::eof();
-        constexpr std::ptrdiff_t kPiece = 64 << 10;
-        char* const at = egptr();
-        setg(at, at, at + std::min(kPiece, end_ - at));
+        if ((stop_ && *stop_) || cancelled()) return traits_type::eof();
+        if (counting_) count(counted_, egptr());
+        piece_start_ += std::size_t(egptr() - eback());
+        char* begin;
+        std::size_t n;
+        if (file_) {
+            begin = piece_.data();
+            n = file_->read(begin, piece_.size());
+        } else {
+            begin = const_cast<char*>(text_.data()) + piece_start_;
+            n = std::min(kPiece, text_.size() - piece_start_);
+        }
+        setg(begin, begin, begin + n);
+        counted_ = begin;
+        if (n == 0) return traits_type::eof();
         return traits_type::to_int_type(*gptr());
     }
 
 private:
-    char* begin_;
-    char* end_;
-    const std::atomic<bool>* cancel_;
-    const bool& stop_;
-};
+    // Line breaks: every \n, and every \r not followed by \n (one pending at the end of a range).
+    void count(const char* b, const char* e) {
+        if (b >= e) return;
+        if (pending_cr_ && *b != '\n') ++lines_;
+        pending_cr_ = false;
+        lines_ += std::size_t(std::count(b, e, '\n'));
+        for (const char* p = b; (p = static_cast<const char*>(std::memchr(p, '\r', std::size_t(e - p)))); ++p) {
+            if (p + 1 == e) pending_cr_ = true;
+            else if (p[1] != '\n') ++lines_;
+        }
+        last_ = e[-1];
+    }
 
-// The 1-based line of the text that ends at `offset` (just past its line break, as tinyobjloader
-// leaves the stream after a line; it ends lines at \n, \r\n and a lone \r alike).
-int line_ending_at(std::string_view text, std::size_t offset) {
-    int line = 0;
-    for (std::size_t i = 0; i < offset; ++i)
-        if (text[i] == '\n' || (text[i] == '\r' && (i + 1 >= text.size() || text[i + 1] != '\n'))) ++line;
-    if (offset == 0 || (text[offset - 1] != '\n' && text[offset - 1] != '\r')) ++line;  // the last line, unended
-    return line;
-}
+    std::string_view text_;
+    FileReader* file_ = nullptr;
+    std::vector<char> piece_;
+    std::size_t piece_start_ = 0;  // offset of eback() in the text
+    const std::atomic<bool>* cancel_;
+    const bool* stop_ = nullptr;
+    bool counting_ = false;
+    const char* counted_ = nullptr;  // lines are counted up to here in the piece
+    std::size_t lines_ = 0;
+    bool pending_cr_ = false;
+    char last_ = 0;  // the last byte counted
+};
 
 constexpr const char* kNames[3] = {"vertex", "texture coordinate", "normal"};
 
@@ -195,29 +252,45 @@ std::string memory_error(std::size_t limit) {
 // How many of each kind of line the text has (a line's first word only): what the arrays are
 // reserved for before the parse, so that none of them grows by doubling (up to twice its size,
 // and a copy) on a big file. A hint: a line tinyobjloader reads otherwise only costs a regrowth.
+// Fed the text in pieces, in order.
 struct LineCounts {
     std::size_t v = 0, vn = 0, vt = 0, f = 0;
-};
-LineCounts count_lines(std::string_view text) {
-    LineCounts n;
-    const char* p = text.data();
-    const char* const end = p + text.size();
-    while (p < end) {
-        while (p < end && (*p == ' ' || *p == '\t')) ++p;
-        if (end - p >= 2) {
-            if (p[0] == 'v') {
-                n.v += p[1] == ' ' || p[1] == '\t';
-                n.vn += p[1] == 'n';
-                n.vt += p[1] == 't';
-            } else if (p[0] == 'f') {
-                n.f += p[1] == ' ' || p[1] == '\t';
+
+    void feed(const char* p, const char* end) {
+        while (p < end) {
+            if (!in_line_) {
+                while (p < end && (*p == ' ' || *p == '\t')) ++p;
+                if (p == end) return;
+                if (!first_) {
+                    first_ = *p++;
+                    if (first_ == '\n') {  // an empty line
+                        first_ = 0;
+                        continue;
+                    }
+                    if (p == end) return;
+                }
+                const char second = *p;  // (not taken: it may end the line)
+                if (first_ == 'v') {
+                    v += second == ' ' || second == '\t';
+                    vn += second == 'n';
+                    vt += second == 't';
+                } else if (first_ == 'f') {
+                    f += second == ' ' || second == '\t';
+                }
+                first_ = 0;
+                in_line_ = true;
             }
+            const void* nl = std::memchr(p, '\n', std::size_t(end - p));
+            if (!nl) return;
+            p = static_cast<const char*>(nl) + 1;
+            in_line_ = false;
         }
-        const void* nl = std::memchr(p, '\n', std::size_t(end - p));
-        p = nl ? static_cast<const char*>(nl) + 1 : end;
     }
-    return n;
-}
+
+private:
+    bool in_line_ = false;  // past a line's first word
+    char first_ = 0;        // a line's first character, when a piece ended after it
+};
 
 // The parse and the mesh made as it goes, filled by tinyobjloader's callbacks. A face is split
 // into triangles and its corners made vertices as soon as it is read, so that neither
@@ -226,7 +299,6 @@ LineCounts count_lines(std::string_view text) {
 // the first one naming a definition further down (OBJ allows it) are kept, and made triangles in
 // file order once the file is read.
 struct Parse {
-    std::string_view text;
     TextBuffer* buffer = nullptr;
     TriangleMesh* mesh = nullptr;
     ObjReadResult* result = nullptr;
@@ -246,10 +318,12 @@ struct Parse {
     bool stop = false;                // a reason to stop reading (memory, cancel)
     std::string error;                // the first bad face (the parse goes on: later definitions count)
     std::size_t error_at = 0;         // its offset in the text
+    int error_line = 0;
     std::size_t faces = 0, next_look = 0;
     // Faces naming a definition further down: checked once the file is read.
     struct Ahead {
         std::size_t at;
+        int line;
         std::int64_t index[3];  // the largest index of each kind named, 0-based
     };
     std::vector<Ahead> ahead;
@@ -258,7 +332,7 @@ struct Parse {
     // What is held now (the arrays as allocated, not as filled) with the mesh's BVH to come
     // (kMeshBvhBytesPerTriangle), and `transient` more for a moment.
     void spend(std::size_t transient = 0) {
-        used = text.size() + (v.capacity() + vn.capacity()) * sizeof(glm::vec3) + vt.capacity() * sizeof(glm::vec2) +
+        used = buffer->held() + (v.capacity() + vn.capacity()) * sizeof(glm::vec3) + vt.capacity() * sizeof(glm::vec2) +
                corners.capacity() * sizeof(Corner) + face_size.capacity() * sizeof(std::uint32_t) +
                ahead.capacity() * sizeof(Ahead) + vertices.bytes() + seen.bytes() + mesh->memory_bytes() +
                mesh->triangles.size() * kMeshBvhBytesPerTriangle;
@@ -275,6 +349,7 @@ struct Parse {
         if (!error.empty()) return;
         error = why;
         error_at = buffer->offset();
+        error_line = buffer->line();
     }
 
     std::uint32_t vertex(const Corner& c) {
@@ -388,7 +463,7 @@ void on_face(void* p, tinyobj::index_t* raw, int n) {
     s.deferring = true;
     s.corners.insert(s.corners.end(), s.face.begin(), s.face.end());
     s.face_size.push_back(std::uint32_t(n));
-    if (names_ahead) s.ahead.push_back({s.buffer->offset(), {ahead[0], ahead[1], ahead[2]}});
+    if (names_ahead) s.ahead.push_back({s.buffer->offset(), s.buffer->line(), {ahead[0], ahead[1], ahead[2]}});
     s.spend();
 }
 
@@ -397,25 +472,24 @@ void release(std::vector<T>& v) {
     std::vector<T>().swap(v);
 }
 
-// read_obj_text, which clears `mesh` whenever this fails.
-ObjReadResult read_obj_text_into(std::string_view text, const std::string& name, TriangleMesh& mesh,
-                                 const ObjLimits& limits) {
+// Reads the OBJ text `buffer` gives (counted ahead in `lines`) into `mesh`, which is left
+// cleared by the callers whenever this fails.
+ObjReadResult read_obj_into(TextBuffer& buffer, const LineCounts& lines, const std::string& name, TriangleMesh& mesh,
+                            const ObjLimits& limits) {
     ObjReadResult result;
     mesh = TriangleMesh();
     mesh.path = name;
     Parse s;
-    s.text = text;
+    s.buffer = &buffer;
+    buffer.stop_when(&s.stop);
     s.mesh = &mesh;
     s.result = &result;
     s.limit = limits.max_bytes;
     s.spend();  // the text is held while the rest is made
-    TextBuffer buffer(text, limits.cancel, s.stop);
-    s.buffer = &buffer;
     if (s.stop) {
         result.error = memory_error(limits.max_bytes);
         return result;
     }
-    const LineCounts lines = count_lines(text);
     s.v.reserve(lines.v);
     s.vn.reserve(lines.vn);
     s.vt.reserve(lines.vt);
@@ -446,6 +520,10 @@ ObjReadResult read_obj_text_into(std::string_view text, const std::string& name,
         result.cancelled = true;
         return result;
     }
+    if (const std::string why = buffer.read_error(); !why.empty()) {
+        result.error = why;
+        return result;
+    }
     if (s.stop) {
         result.error = memory_error(limits.max_bytes);
         return result;
@@ -461,11 +539,12 @@ ObjReadResult read_obj_text_into(std::string_view text, const std::string& name,
                   ", but the file has " + std::to_string(s.count(kind)) +
                   " (indices start at 1; negative ones count back)";
         s.error_at = a.at;
+        s.error_line = a.line;
         break;
     }
     if (!s.error.empty()) {
         result.error = s.error;
-        result.line = line_ending_at(text, s.error_at);
+        result.line = s.error_line;
         return result;
     }
     release(s.ahead);
@@ -513,20 +592,39 @@ ObjReadResult read_obj_text_into(std::string_view text, const std::string& name,
 
 ObjReadResult read_obj_text(std::string_view text, const std::string& name, TriangleMesh& mesh,
                             const ObjLimits& limits) {
-    ObjReadResult result = read_obj_text_into(text, name, mesh, limits);
+    LineCounts lines;
+    lines.feed(text.data(), text.data() + text.size());
+    TextBuffer buffer(text, limits.cancel);
+    ObjReadResult result = read_obj_into(buffer, lines, name, mesh, limits);
     if (!result.ok) mesh = TriangleMesh();  // nothing half-made is left
     return result;
 }
 
+ObjReadResult read_obj_file(FileReader& file, const std::string& name, TriangleMesh& mesh, const ObjLimits& limits) {
+    // The pieces read twice: counted first (a hint for the arrays), then parsed.
+    LineCounts lines;
+    std::vector<char> piece(TextBuffer::kPiece);
+    const std::size_t start = file.position();
+    for (std::size_t n; (n = file.read(piece.data(), piece.size())) > 0;) lines.feed(piece.data(), piece.data() + n);
+    file.seek(start);
+    std::vector<char>().swap(piece);
+    TextBuffer buffer(file, limits.cancel);
+    ObjReadResult result = read_obj_into(buffer, lines, name, mesh, limits);
+    if (!result.ok) mesh = TriangleMesh();
+    return result;
+}
+
 ObjReadResult read_obj(const std::string& path, TriangleMesh& mesh, const ObjLimits& limits) {
-    FileContents file = read_regular_file(path, limits.max_file_bytes, limits.cancel);
+    FileReader file(path, limits.max_file_bytes, limits.cancel);
     if (!file.ok()) {
         ObjReadResult r;
-        r.cancelled = file.cancelled;
-        if (!file.cancelled) r.error = "cannot read '" + path + "': " + file.error;
+        r.cancelled = file.info().cancelled;
+        if (!r.cancelled) r.error = "cannot read '" + path + "': " + file.info().error;
         return r;
     }
-    return read_obj_text(file.bytes, path, mesh, limits);
+    ObjReadResult r = read_obj_file(file, path, mesh, limits);
+    if (!r.ok && !r.cancelled && r.line == 0 && !file.info().error.empty()) r.error = "cannot read '" + path + "': " + r.error;
+    return r;
 }
 
 }  // namespace whitted
