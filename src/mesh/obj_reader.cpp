@@ -228,7 +228,7 @@ private:
     }
     static bool same(const glm::vec3& a, const glm::vec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
     void grow(const TriangleMesh& mesh) {
-        std::vector<std::uint32_t> old(slots_.size() * 2, kEmpty);
+        BigVector<std::uint32_t> old(slots_.size() * 2, kEmpty);
         old.swap(slots_);
         const std::size_t mask = slots_.size() - 1;
         for (std::uint32_t t : old)
@@ -240,7 +240,7 @@ private:
                 slots_[i] = t;
             }
     }
-    std::vector<std::uint32_t> slots_;
+    BigVector<std::uint32_t> slots_;  // on 2 MB pages: each probe is a miss, not a TLB miss too
     std::size_t count_ = 0;
 };
 
