@@ -259,9 +259,9 @@ struct LineCounts {
     void feed(const char* p, const char* end) {
         while (p < end) {
             if (!in_line_) {
-                while (p < end && (*p == ' ' || *p == '\t')) ++p;
-                if (p == end) return;
                 if (!first_) {
+                    while (p < end && (*p == ' ' || *p == '\t')) ++p;
+                    if (p == end) return;
                     first_ = *p++;
                     if (first_ == '\n') {  // an empty line
                         first_ = 0;
@@ -493,8 +493,9 @@ ObjReadResult read_obj_into(TextBuffer& buffer, const LineCounts& lines, const s
     s.v.reserve(lines.v);
     s.vn.reserve(lines.vn);
     s.vt.reserve(lines.vt);
-    // A vertex per position, and a few more where seams split one.
-    const std::size_t vertices = lines.v + lines.v / 16;
+    // A vertex per position, and a few more where seams split one; no more than the faces'
+    // corners can make (a file of positions alone reserves no mesh for them).
+    const std::size_t vertices = std::min(lines.v + lines.v / 16, 3 * lines.f);
     s.vertices.reserve(vertices);
     mesh.positions.reserve(vertices);
     if (lines.vn) mesh.normals.reserve(vertices);

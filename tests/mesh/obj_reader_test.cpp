@@ -133,6 +133,69 @@ TEST(ObjReader, ReadingHoldsNoCopyOfTheFaces) {
     EXPECT_NE(small.error.find("(--max-memory; a scene's objects, textures and meshes share it)"), std::string::npos);
 }
 
+TEST(ObjReader, AFileReadInPiecesGivesTheSameMeshAndTheSameErrorLines) {
+    // Over 200 KiB (a file is parsed 64 KiB at a time): lines ending in \n, \r\n and a lone \r
+    // in turn, a \r\n split across the first piece boundary (its \r the piece's last byte), and
+    // the first face naming a later vertex past that boundary, so that its line is counted with
+    // the pieces before read again.
+    std::string text;
+    int lines = 0;
+    auto line = [&](const std::string& s) {
+        static const char* const ends[3] = {"\n", "\r\n", "\r"};
+        text += s + ends[lines % 3];
+        ++lines;
+    };
+    int vertices = 0;
+    auto quad = [&](float x) {
+        for (int k = 0; k < 4; ++k) line("v " + std::to_string(x + (k == 1 || k == 2)) + " " + std::to_string(k / 2) + " 0");
+        vertices += 4;
+        line("vn 0 0 1");
+        line("f -4//-1 -3//-1 -2//-1 -1//-1");
+    };
+    constexpr std::size_t kPiece = 64 << 10;
+    for (int q = 0; text.size() < kPiece - 200; ++q) quad(float(q));
+    while (lines % 3 != 1) line("# to a \\r\\n ending");
+    // A comment whose \r\n ending puts the \r at the piece's last byte.
+    std::string comment(kPiece - 1 - text.size(), '-');
+    comment[0] = '#';
+    line(comment);
+    ASSERT_EQ(text[kPiece - 1], '\r');
+    ASSERT_EQ(text[kPiece], '\n');
+    for (int q = 0; text.size() < 2 * kPiece; ++q) quad(1000.0f + float(q));
+    line("f " + std::to_string(vertices + 1) + " " + std::to_string(vertices + 2) + " " + std::to_string(vertices + 3));
+    for (int k = 0; k < 3; ++k) line("v " + std::to_string(k == 1) + " " + std::to_string(k == 2) + " 5");
+    vertices += 3;
+    for (int q = 0; text.size() < 3 * kPiece + 5000; ++q) quad(2000.0f + float(q));
+    const std::string dir = test::make_temp_dir();
+    const std::string good = test::write_file(dir, "good.obj", text);
+    TriangleMesh from_text, from_file;
+    const ObjReadResult a = read_obj_text(text, "good.obj", from_text);
+    const ObjReadResult b = read_obj(good, from_file);
+    ASSERT_TRUE(a.ok) << a.error;
+    ASSERT_TRUE(b.ok) << b.error;
+    const std::size_t quads = std::size_t(vertices - 3) / 4;
+    EXPECT_EQ(from_file.triangles.size(), 2 * quads + 1);
+    EXPECT_EQ(std::vector<TriangleIndices>(from_file.triangles.begin(), from_file.triangles.end()),
+              std::vector<TriangleIndices>(from_text.triangles.begin(), from_text.triangles.end()));
+    EXPECT_EQ(std::vector<glm::vec3>(from_file.positions.begin(), from_file.positions.end()),
+              std::vector<glm::vec3>(from_text.positions.begin(), from_text.positions.end()));
+    EXPECT_EQ(std::vector<glm::vec3>(from_file.normals.begin(), from_file.normals.end()),
+              std::vector<glm::vec3>(from_text.normals.begin(), from_text.normals.end()));
+
+    // A face naming vertex 0 on line `lines + 1`, in the fourth piece; and a face naming a vertex
+    // never defined after it, whose error is not the first.
+    const int bad_line = lines + 1;
+    line("f 1 0 2");
+    line("f 1 2 " + std::to_string(vertices + 100));
+    const std::string bad = test::write_file(dir, "bad.obj", text);
+    TriangleMesh m;
+    const ObjReadResult c = read_obj(bad, m);
+    EXPECT_FALSE(c.ok);
+    EXPECT_EQ(c.line, bad_line) << c.error;
+    EXPECT_NE(c.error.find("vertex index 0"), std::string::npos) << c.error;
+    EXPECT_EQ(read_obj_text(text, "bad.obj", m).line, bad_line);
+}
+
 TEST(ObjReader, DegenerateTrianglesAreSkippedAndCounted) {
     TriangleMesh m;
     const ObjReadResult r = read_obj_text("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\n"
