@@ -85,9 +85,12 @@ MeshBvh build_mesh_bvh(TriangleMesh& mesh, int threads, const std::atomic<bool>*
         mesh.triangles.size(), [&](std::uint32_t t) { return padded_triangle_bounds(mesh, t); }, kTriangleCosts, threads,
         order, cancel);
     if (out.bvh.nodes.empty()) return out;  // cancelled
+    // The build reserves for the worst case; a mesh lives long. Shrunk (a copy) before the
+    // blocks are made, and the order let go before them, so that neither adds to their peak.
+    out.bvh.nodes.shrink_to_fit();
     permute(mesh.triangles, order);
+    std::vector<std::uint32_t>().swap(order);
     make_blocks(out, mesh, threads);
-    out.bvh.nodes.shrink_to_fit();  // the build reserves for the worst case; a mesh lives long
     mesh.box = out.bvh.box;
     return out;
 }

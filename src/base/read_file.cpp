@@ -24,6 +24,11 @@ public:
     Fd(const Fd&) = delete;
     Fd& operator=(const Fd&) = delete;
     int get() const { return fd_; }
+    int release() {
+        const int fd = fd_;
+        fd_ = -1;
+        return fd;
+    }
 
 private:
     int fd_;
@@ -134,34 +139,51 @@ std::string describe_bytes(std::size_t bytes) {
     return buf;
 }
 
-FileContents read_regular_file(const std::string& path, std::size_t max_bytes, const std::atomic<bool>* cancel,
-                               const Confinement* inside) {
-    FileContents out;
-    auto stopped = [&] { return out.cancelled = cancel && cancel->load(std::memory_order_relaxed); };
-    const Fd fd(inside ? inside->open_inside(path) : open(path.c_str(), kReadFlags));
+namespace {
+
+// Opens `path` and checks what was opened (fstat: a regular file, within the limit); on failure
+// -1, with out.error (or out.missing) saying why.
+int open_checked(const std::string& path, std::size_t max_bytes, const Confinement* inside, FileContents& out) {
+    Fd fd(inside ? inside->open_inside(path) : open(path.c_str(), kReadFlags));
     if (fd.get() < 0) {
         out.missing = errno == ENOENT;
         out.error = std::strerror(errno);
-        return out;
+        return -1;
     }
     // What was opened is what is checked and read.
     struct stat st {};
     if (fstat(fd.get(), &st) != 0) {
         out.error = std::strerror(errno);
-        return out;
+        return -1;
     }
     out.device = std::uint64_t(st.st_dev);
     out.inode = std::uint64_t(st.st_ino);
     if (S_ISDIR(st.st_mode)) {
         out.error = "it is a directory";
-        return out;
+        return -1;
     }
     if (!S_ISREG(st.st_mode)) {
         out.error = "it is not a regular file (a device, pipe or socket is not read)";
-        return out;
+        return -1;
     }
     if (std::size_t(st.st_size) > max_bytes) {
         out.error = "it is " + std::to_string(st.st_size) + " bytes, more than the limit of " + describe_bytes(max_bytes);
+        return -1;
+    }
+    return fd.release();
+}
+
+}  // namespace
+
+FileContents read_regular_file(const std::string& path, std::size_t max_bytes, const std::atomic<bool>* cancel,
+                               const Confinement* inside) {
+    FileContents out;
+    auto stopped = [&] { return out.cancelled = cancel && cancel->load(std::memory_order_relaxed); };
+    const Fd fd(open_checked(path, max_bytes, inside, out));
+    if (fd.get() < 0) return out;
+    struct stat st {};
+    if (fstat(fd.get(), &st) != 0) {
+        out.error = std::strerror(errno);
         return out;
     }
     out.bytes.resize(std::size_t(st.st_size));
@@ -171,7 +193,21 @@ FileContents read_regular_file(const std::string& path, std::size_t max_bytes, c
         if (stopped()) return out;
         if (have == out.bytes.size()) {
             if (have >= max_bytes) break;  // one byte more would be over: check that the file ended
-            out.bytes.resize(std::min(max_bytes, have + kChunk));  // the file grew since fstat
+            // The size fstat gave is read: whether the file ended is asked with a small buffer, not
+            // by growing the string, which would copy the whole text into an allocation twice its
+            // size (for a moment both in memory) for a file that nearly always has ended.
+            char probe[4096];
+            const ssize_t n = read(fd.get(), probe, std::min(sizeof probe, max_bytes - have));
+            if (n < 0) {
+                if (errno == EINTR) continue;
+                out.error = std::strerror(errno);
+                return out;
+            }
+            if (n == 0) break;
+            out.bytes.append(probe, std::size_t(n));  // the file grew since fstat
+            have += std::size_t(n);
+            out.bytes.resize(std::min(max_bytes, have + kChunk));
+            continue;
         }
         const ssize_t n = read(fd.get(), out.bytes.data() + have, std::min(kChunk, out.bytes.size() - have));
         if (n < 0) {
@@ -193,6 +229,39 @@ FileContents read_regular_file(const std::string& path, std::size_t max_bytes, c
     }
     out.bytes.resize(have);
     return out;
+}
+
+FileReader::FileReader(const std::string& path, std::size_t max_bytes, const std::atomic<bool>* cancel,
+                       const Confinement* inside)
+    : max_bytes_(max_bytes), cancel_(cancel) {
+    fd_ = open_checked(path, max_bytes, inside, info_);
+}
+
+FileReader::~FileReader() {
+    if (fd_ >= 0) close(fd_);
+}
+
+std::size_t FileReader::read(char* out, std::size_t n) {
+    if (fd_ < 0 || !info_.ok()) return 0;
+    if (cancel_ && cancel_->load(std::memory_order_relaxed)) {
+        info_.cancelled = true;
+        return 0;
+    }
+    // One byte past the limit is asked for: a file that grew beyond it is refused, not cut short.
+    if (at_ > max_bytes_) return 0;  // (sought past the limit: nothing there to read)
+    const std::size_t want = max_bytes_ - at_ >= n ? n : max_bytes_ - at_ + 1;
+    ssize_t got;
+    while ((got = pread(fd_, out, want, off_t(at_))) < 0 && errno == EINTR) {}
+    if (got < 0) {
+        info_.error = std::strerror(errno);
+        return 0;
+    }
+    at_ += std::size_t(got);
+    if (at_ > max_bytes_) {
+        info_.error = "it grew past the limit of " + describe_bytes(max_bytes_) + " while being read";
+        return 0;
+    }
+    return std::size_t(got);
 }
 
 FileContents read_file_start(const std::string& path, std::size_t max_bytes) {

@@ -53,6 +53,35 @@ private:
 FileContents read_regular_file(const std::string& path, std::size_t max_bytes,
                                const std::atomic<bool>* cancel = nullptr, const Confinement* inside = nullptr);
 
+// The same door for a file used a piece at a time, never held whole (a mesh's text: a 1M-triangle
+// OBJ is 40 to 100 MB, as much as the mesh made of it): opened and checked as read_regular_file
+// opens and checks (info() says why not, with `bytes` always empty), then read in order.
+class FileReader {
+public:
+    FileReader(const std::string& path, std::size_t max_bytes, const std::atomic<bool>* cancel = nullptr,
+               const Confinement* inside = nullptr);
+    ~FileReader();
+    FileReader(const FileReader&) = delete;
+    FileReader& operator=(const FileReader&) = delete;
+
+    const FileContents& info() const { return info_; }
+    bool ok() const { return info_.ok(); }
+    // Up to `n` bytes from where the last read ended into `out`: 0 at the end of the file, and
+    // when it cannot go on (info() then says why: an error, the cancel flag, or the file grew
+    // past the size limit while being read).
+    std::size_t read(char* out, std::size_t n);
+    // Where the next read starts (the same file: what was opened is what is read again).
+    std::size_t position() const { return at_; }
+    void seek(std::size_t at) { at_ = at; }
+
+private:
+    FileContents info_;
+    int fd_ = -1;
+    std::size_t max_bytes_;
+    const std::atomic<bool>* cancel_;
+    std::size_t at_ = 0;
+};
+
 // The first (up to) `max_bytes` bytes of a regular file, whatever its size: enough to tell what
 // kind of file it is without reading all of it. Refuses what read_regular_file refuses.
 FileContents read_file_start(const std::string& path, std::size_t max_bytes);

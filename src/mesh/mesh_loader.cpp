@@ -64,8 +64,12 @@ MeshLoadResult load_meshes(FlattenResult& flat, const std::string& scene_path, c
             mesh_of_material[m] = it->second;
             continue;
         }
-        // Where the bytes come from: the file found (through the door), or what another process sent.
+        // Where the bytes come from: the file found (through the door), or what another process
+        // sent. A file whose bytes are not kept to send on is read a piece at a time as it is
+        // parsed, never held whole (its text is as big as the mesh made of it).
+        const bool whole = options.preread || (kept && options.keep_files);
         FileContents file;
+        std::unique_ptr<FileReader> reader;
         std::string found;
         std::vector<std::string> tried;
         if (options.preread) {
@@ -87,7 +91,12 @@ MeshLoadResult load_meshes(FlattenResult& flat, const std::string& scene_path, c
             std::string reason;  // why a file that is there could not be read
             for (const std::string& c : texture_candidates(o.mesh_file, scene_path, options.search_dirs)) {
                 tried.push_back(c);
-                file = read_regular_file(c, options.max_file_bytes, options.cancel, inside.get());
+                if (whole) {
+                    file = read_regular_file(c, options.max_file_bytes, options.cancel, inside.get());
+                } else {
+                    reader = std::make_unique<FileReader>(c, options.max_file_bytes, options.cancel, inside.get());
+                    file = reader->info();
+                }
                 if (file.cancelled) return result.cancelled = true, result.ok = false, result;
                 if (file.ok()) {
                     found = c;
@@ -114,7 +123,8 @@ MeshLoadResult load_meshes(FlattenResult& flat, const std::string& scene_path, c
                 continue;
             }
         TriangleMesh mesh;
-        const ObjReadResult r = read_obj_text(file.bytes, found, mesh, limits);
+        const ObjReadResult r = whole ? read_obj_text(file.bytes, found, mesh, limits)
+                                      : read_obj_file(*reader, found, mesh, limits);
         if (r.cancelled) return result.cancelled = true, result.ok = false, result;
         if (!r.ok) {
             const std::string where = r.line > 0 ? found + ":" + std::to_string(r.line) : found;

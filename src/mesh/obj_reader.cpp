@@ -1,13 +1,14 @@
 #include "mesh/obj_reader.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <istream>
 #include <limits>
 #include <streambuf>
-#include <unordered_map>
+#include <vector>
 
 #include <tiny_obj_loader.h>
 
@@ -17,44 +18,100 @@
 namespace whitted {
 namespace {
 
-// The text handed to tinyobjloader 64 KiB at a time: between pieces the cancel flag (and a reason
-// of our own to stop) is looked at, and where the parser is in the text is always known, for the
-// line of an error (its callbacks do not say).
+// The text handed to tinyobjloader 64 KiB at a time, from memory or from a file read as it goes
+// (never held whole): between pieces the cancel flag (and a reason of our own to stop) is looked
+// at, and where the parser is in the text is always known, for the line of an error (its
+// callbacks do not say).
 class TextBuffer : public std::streambuf {
 public:
-    TextBuffer(std::string_view text, const std::atomic<bool>* cancel, const bool& stop)
-        : begin_(const_cast<char*>(text.data())), end_(begin_ + text.size()), cancel_(cancel), stop_(stop) {
-        setg(begin_, begin_, begin_);
-    }
-    std::size_t offset() const { return std::size_t(gptr() - begin_); }
+    static constexpr std::size_t kPiece = 64 << 10;
+
+    TextBuffer(std::string_view text, const std::atomic<bool>* cancel) : text_(text), cancel_(cancel) {}
+    TextBuffer(FileReader& file, const std::atomic<bool>* cancel) : file_(&file), piece_(kPiece), cancel_(cancel) {}
+    // The text ends early once `*stop` is set.
+    void stop_when(const bool* stop) { stop_ = stop; }
+    std::size_t offset() const { return piece_start_ + std::size_t(gptr() - eback()); }
     bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
+    // Why the file could not be read to its end ("" if it was, or the text is in memory).
+    std::string read_error() const { return file_ && !file_->info().cancelled ? file_->info().error : std::string(); }
+    // Bytes of the text held in memory: all of it, or the piece read.
+    std::size_t held() const { return file_ ? piece_.size() : text_.size(); }
+
+    // The 1-based line of the text that ends at offset() (just past its line break, as
+    // tinyobjloader leaves the stream after a line; it ends lines at \n, \r\n and a lone \r alike).
+    // Lines are counted from the first time this is asked (a file's pieces before read again),
+    // then as the pieces pass: a file without errors or faces naming later vertices counts none.
+    int line() {
+        if (!counting_) {
+            counting_ = true;
+            if (file_) {
+                const std::size_t resume = file_->position();
+                std::vector<char> before(kPiece);
+                file_->seek(0);
+                for (std::size_t at = 0; at < piece_start_;) {
+                    const std::size_t n = file_->read(before.data(), std::min(kPiece, piece_start_ - at));
+                    if (n == 0) break;  // (the file changed under us: the line is only a hint)
+                    count(before.data(), before.data() + n);
+                    at += n;
+                }
+                file_->seek(resume);
+            } else {
+                count(text_.data(), text_.data() + piece_start_);
+            }
+            counted_ = eback();
+        }
+        count(counted_, gptr());
+        counted_ = gptr();
+        return int(lines_ + (pending_cr_ ? 1 : 0) + (last_ == '\n' || last_ == '\r' ? 0 : 1));
+    }
 
 protected:
     int_type underflow() override {
         if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
-        if (stop_ || cancelled() || egptr() == end_) return traits_type::eof();
-        constexpr std::ptrdiff_t kPiece = 64 << 10;
-        char* const at = egptr();
-        setg(at, at, at + std::min(kPiece, end_ - at));
+        if ((stop_ && *stop_) || cancelled()) return traits_type::eof();
+        if (counting_) count(counted_, egptr());
+        piece_start_ += std::size_t(egptr() - eback());
+        char* begin;
+        std::size_t n;
+        if (file_) {
+            begin = piece_.data();
+            n = file_->read(begin, piece_.size());
+        } else {
+            begin = const_cast<char*>(text_.data()) + piece_start_;
+            n = std::min(kPiece, text_.size() - piece_start_);
+        }
+        setg(begin, begin, begin + n);
+        counted_ = begin;
+        if (n == 0) return traits_type::eof();
         return traits_type::to_int_type(*gptr());
     }
 
 private:
-    char* begin_;
-    char* end_;
-    const std::atomic<bool>* cancel_;
-    const bool& stop_;
-};
+    // Line breaks: every \n, and every \r not followed by \n (one pending at the end of a range).
+    void count(const char* b, const char* e) {
+        if (b >= e) return;
+        if (pending_cr_ && *b != '\n') ++lines_;
+        pending_cr_ = false;
+        lines_ += std::size_t(std::count(b, e, '\n'));
+        for (const char* p = b; (p = static_cast<const char*>(std::memchr(p, '\r', std::size_t(e - p)))); ++p) {
+            if (p + 1 == e) pending_cr_ = true;
+            else if (p[1] != '\n') ++lines_;
+        }
+        last_ = e[-1];
+    }
 
-// The 1-based line of the text that ends at `offset` (just past its line break, as tinyobjloader
-// leaves the stream after a line; it ends lines at \n, \r\n and a lone \r alike).
-int line_ending_at(std::string_view text, std::size_t offset) {
-    int line = 0;
-    for (std::size_t i = 0; i < offset; ++i)
-        if (text[i] == '\n' || (text[i] == '\r' && (i + 1 >= text.size() || text[i + 1] != '\n'))) ++line;
-    if (offset == 0 || (text[offset - 1] != '\n' && text[offset - 1] != '\r')) ++line;  // the last line, unended
-    return line;
-}
+    std::string_view text_;
+    FileReader* file_ = nullptr;
+    std::vector<char> piece_;
+    std::size_t piece_start_ = 0;  // offset of eback() in the text
+    const std::atomic<bool>* cancel_;
+    const bool* stop_ = nullptr;
+    bool counting_ = false;
+    const char* counted_ = nullptr;  // lines are counted up to here in the piece
+    std::size_t lines_ = 0;
+    bool pending_cr_ = false;
+    char last_ = 0;  // the last byte counted
+};
 
 constexpr const char* kNames[3] = {"vertex", "texture coordinate", "normal"};
 
@@ -62,105 +119,6 @@ constexpr const char* kNames[3] = {"vertex", "texture coordinate", "normal"};
 struct Corner {
     std::int32_t index[3];
 };
-
-// What the parse keeps of the file, filled by tinyobjloader's callbacks.
-struct Parse {
-    std::string_view text;
-    TextBuffer* buffer = nullptr;
-    std::vector<glm::vec3> v, vn;
-    std::vector<glm::vec2> vt;
-    std::vector<Corner> corners;
-    std::vector<std::uint32_t> face_size;
-    std::size_t used = 0, limit = 0;  // bytes
-    bool stop = false;                // a reason to stop reading (memory)
-    std::string error;                // the first bad face (the parse goes on: later definitions count)
-    std::size_t error_at = 0;         // its offset in the text
-    // Faces naming a definition further down (OBJ allows it): checked once the file is read.
-    struct Ahead {
-        std::size_t at;
-        std::int64_t index[3];  // the largest index of each kind named, 0-based
-    };
-    std::vector<Ahead> ahead;
-
-    std::size_t count(int kind) const { return kind == 0 ? v.size() : kind == 1 ? vt.size() : vn.size(); }
-    // What is held now (the vectors as allocated, not as filled), and `transient` more for a moment.
-    void spend(std::size_t transient = 0) {
-        used = text.size() + (v.capacity() + vn.capacity()) * sizeof(glm::vec3) + vt.capacity() * sizeof(glm::vec2) +
-               corners.capacity() * sizeof(Corner) + face_size.capacity() * sizeof(std::uint32_t) +
-               ahead.capacity() * sizeof(Ahead);
-        if (used + transient > limit) stop = true;
-    }
-    void bad_face(const std::string& why) {
-        if (!error.empty()) return;
-        error = why;
-        error_at = buffer->offset();
-    }
-};
-
-void on_vertex(void* p, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z, tinyobj::real_t) {
-    Parse& s = *static_cast<Parse*>(p);
-    s.v.emplace_back(x, y, z);
-    s.spend();
-}
-
-void on_normal(void* p, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z) {
-    Parse& s = *static_cast<Parse*>(p);
-    s.vn.emplace_back(x, y, z);
-    s.spend();
-}
-
-void on_texcoord(void* p, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t) {
-    Parse& s = *static_cast<Parse*>(p);
-    s.vt.emplace_back(x, y);
-    s.spend();
-}
-
-// A face: its raw OBJ indices (1-based; negative count back from the last definition so far; 0 is
-// none for vt and vn, and for v either a 0 or no number at all) made 0-based and checked.
-void on_face(void* p, tinyobj::index_t* raw, int n) {
-    Parse& s = *static_cast<Parse*>(p);
-    if (s.stop || !s.error.empty()) return;
-    // tinyobjloader holds the face too while this runs, and its line.
-    s.spend(std::size_t(n) * (sizeof(tinyobj::index_t) + sizeof(Corner)));
-    if (s.stop) return;
-    std::int64_t ahead[3] = {-1, -1, -1};
-    const std::size_t first = s.corners.size();
-    for (int c = 0; c < n; ++c) {
-        const int given[3] = {raw[c].vertex_index, raw[c].texcoord_index, raw[c].normal_index};
-        Corner corner{};
-        for (int k = 0; k < 3; ++k) {
-            const std::int64_t r = given[k], defined = std::int64_t(s.count(k));
-            std::int64_t i = -1;
-            if (r > 0) {
-                i = r - 1;
-                if (i >= defined) ahead[k] = std::max(ahead[k], i);
-            } else if (r < 0) {
-                i = defined + r;
-                if (i < 0) {
-                    s.bad_face("face refers to " + std::string(kNames[k]) + " " + std::to_string(r) +
-                               ", but the file defines " + std::to_string(defined) +
-                               " before this line (indices start at 1; negative ones count back)");
-                    break;
-                }
-            } else if (k == 0) {
-                s.bad_face("a face has vertex index 0 or no number where a vertex index belongs (indices start "
-                           "at 1; negative ones count back)");
-                break;
-            }
-            corner.index[k] = std::int32_t(i);
-        }
-        if (!s.error.empty()) break;
-        s.corners.push_back(corner);
-    }
-    if (!s.error.empty() || n < 3) {  // a face of one or two corners draws nothing
-        s.corners.resize(first);
-        return;
-    }
-    s.face_size.push_back(std::uint32_t(n));
-    if (ahead[0] >= 0 || ahead[1] >= 0 || ahead[2] >= 0)
-        s.ahead.push_back({s.buffer->offset(), {ahead[0], ahead[1], ahead[2]}});
-    s.spend();
-}
 
 bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
@@ -170,17 +128,62 @@ struct CornerKey {
     std::uint32_t v, n, t;
     bool operator==(const CornerKey&) const = default;
 };
-struct CornerKeyHash {
-    std::size_t operator()(const CornerKey& k) const {
+
+// The mesh vertex of each distinct corner key: an open-addressing table of vertex numbers, each
+// vertex's key kept beside it in vertex order (about 20 bytes a vertex). A node-based map cost
+// about 64 bytes a vertex in small heap blocks, which the allocator kept after they were freed,
+// so that the BVH build that follows started from a resident heap the size of the map.
+class VertexTable {
+public:
+    void reserve(std::size_t vertices) {
+        keys_.reserve(vertices);
+        std::size_t size = 16;
+        while (size < 2 * vertices) size *= 2;
+        if (size > slots_.size()) rehash(size);
+    }
+    // The vertex of `key`; a new one (numbered in order of first use) when `added`.
+    std::uint32_t find_or_add(const CornerKey& key, bool& added) {
+        if ((keys_.size() + 1) * 2 > slots_.size()) rehash(std::max<std::size_t>(16, slots_.size() * 2));
+        const std::size_t mask = slots_.size() - 1;
+        for (std::size_t i = hash(key) & mask;; i = (i + 1) & mask) {
+            const std::uint32_t s = slots_[i];
+            if (s == kNoIndex) {
+                slots_[i] = std::uint32_t(keys_.size());
+                keys_.push_back(key);
+                added = true;
+                return slots_[i];
+            }
+            if (keys_[s] == key) {
+                added = false;
+                return s;
+            }
+        }
+    }
+    std::size_t bytes() const { return keys_.capacity() * sizeof(CornerKey) + slots_.capacity() * sizeof(std::uint32_t); }
+    void release() {
+        BigVector<CornerKey>().swap(keys_);
+        BigVector<std::uint32_t>().swap(slots_);
+    }
+
+private:
+    static std::size_t hash(const CornerKey& k) {
         std::uint64_t h = k.v * 0x9E3779B97F4A7C15ull;
         h ^= (h >> 29) + k.n * 0xBF58476D1CE4E5B9ull;
         h ^= (h >> 31) + k.t * 0x94D049BB133111EBull;
         return std::size_t(h ^ (h >> 32));
     }
+    void rehash(std::size_t size) {
+        BigVector<std::uint32_t>(size, kNoIndex).swap(slots_);
+        const std::size_t mask = size - 1;
+        for (std::uint32_t k = 0; k < keys_.size(); ++k) {
+            std::size_t i = hash(keys_[k]) & mask;
+            while (slots_[i] != kNoIndex) i = (i + 1) & mask;
+            slots_[i] = k;
+        }
+    }
+    BigVector<CornerKey> keys_;
+    BigVector<std::uint32_t> slots_;
 };
-// What one entry of the corner map costs (a node of three indices and a vertex number, its hash,
-// the allocator's overhead, a bucket).
-constexpr std::size_t kBytesPerCornerEntry = 64;
 
 // Triangles with the same three positions in the same order as one kept before: the same triangle
 // to every ray (the same arithmetic gives the same hit, and of equal hits the first is taken), so
@@ -225,7 +228,7 @@ private:
     }
     static bool same(const glm::vec3& a, const glm::vec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
     void grow(const TriangleMesh& mesh) {
-        std::vector<std::uint32_t> old(slots_.size() * 2, kEmpty);
+        BigVector<std::uint32_t> old(slots_.size() * 2, kEmpty);
         old.swap(slots_);
         const std::size_t mask = slots_.size() - 1;
         for (std::uint32_t t : old)
@@ -237,7 +240,7 @@ private:
                 slots_[i] = t;
             }
     }
-    std::vector<std::uint32_t> slots_;
+    BigVector<std::uint32_t> slots_;  // on 2 MB pages: each probe is a miss, not a TLB miss too
     std::size_t count_ = 0;
 };
 
@@ -246,20 +249,265 @@ std::string memory_error(std::size_t limit) {
            " of memory left for it (--max-memory; a scene's objects, textures and meshes share it)";
 }
 
-// read_obj_text, which clears `mesh` whenever this fails.
-ObjReadResult read_obj_text_into(std::string_view text, const std::string& name, TriangleMesh& mesh,
-                                 const ObjLimits& limits) {
+// How many of each kind of line the text has (a line's first word only): what the arrays are
+// reserved for before the parse, so that none of them grows by doubling (up to twice its size,
+// and a copy) on a big file. A hint: a line tinyobjloader reads otherwise only costs a regrowth.
+// Fed the text in pieces, in order.
+struct LineCounts {
+    std::size_t v = 0, vn = 0, vt = 0, f = 0;
+
+    void feed(const char* p, const char* end) {
+        while (p < end) {
+            if (!in_line_) {
+                if (!first_) {
+                    while (p < end && (*p == ' ' || *p == '\t')) ++p;
+                    if (p == end) return;
+                    first_ = *p++;
+                    if (first_ == '\n') {  // an empty line
+                        first_ = 0;
+                        continue;
+                    }
+                    if (p == end) return;
+                }
+                const char second = *p;  // (not taken: it may end the line)
+                if (first_ == 'v') {
+                    v += second == ' ' || second == '\t';
+                    vn += second == 'n';
+                    vt += second == 't';
+                } else if (first_ == 'f') {
+                    f += second == ' ' || second == '\t';
+                }
+                first_ = 0;
+                in_line_ = true;
+            }
+            const void* nl = std::memchr(p, '\n', std::size_t(end - p));
+            if (!nl) return;
+            p = static_cast<const char*>(nl) + 1;
+            in_line_ = false;
+        }
+    }
+
+private:
+    bool in_line_ = false;  // past a line's first word
+    char first_ = 0;        // a line's first character, when a piece ended after it
+};
+
+// The parse and the mesh made as it goes, filled by tinyobjloader's callbacks. A face is split
+// into triangles and its corners made vertices as soon as it is read, so that neither
+// tinyobjloader's arrays nor a copy of every corner is held while the mesh is made: of a file's
+// own arrays only its v, vn and vt stay (the faces look them up anywhere behind them). Faces from
+// the first one naming a definition further down (OBJ allows it) are kept, and made triangles in
+// file order once the file is read.
+struct Parse {
+    TextBuffer* buffer = nullptr;
+    TriangleMesh* mesh = nullptr;
+    ObjReadResult* result = nullptr;
+    std::vector<glm::vec3> v, vn;
+    std::vector<glm::vec2> vt;
+    // Each mesh vertex is one distinct (v, vn, vt) of the file's corners (split where a seam gives
+    // one position two uvs), so a triangle costs one index triple, as pbrt and Embree keep meshes.
+    VertexTable vertices;
+    SameTriangles seen{0};
+    std::vector<Corner> face;  // the face being read
+    std::vector<glm::vec3> polygon;
+    std::vector<std::array<std::uint32_t, 3>> split;
+    bool deferring = false;          // a face named a definition further down: faces are kept from it on
+    std::vector<Corner> corners;     // of the kept faces
+    std::vector<std::uint32_t> face_size;
+    std::size_t used = 0, limit = 0;  // bytes
+    bool stop = false;                // a reason to stop reading (memory, cancel)
+    std::string error;                // the first bad face (the parse goes on: later definitions count)
+    std::size_t error_at = 0;         // its offset in the text
+    int error_line = 0;
+    std::size_t faces = 0, next_look = 0;
+    // Faces naming a definition further down: checked once the file is read.
+    struct Ahead {
+        std::size_t at;
+        int line;
+        std::int64_t index[3];  // the largest index of each kind named, 0-based
+    };
+    std::vector<Ahead> ahead;
+
+    std::size_t count(int kind) const { return kind == 0 ? v.size() : kind == 1 ? vt.size() : vn.size(); }
+    // What is held now (the arrays as allocated, not as filled) with the mesh's BVH to come
+    // (kMeshBvhBytesPerTriangle), and `transient` more for a moment.
+    void spend(std::size_t transient = 0) {
+        used = buffer->held() + (v.capacity() + vn.capacity()) * sizeof(glm::vec3) + vt.capacity() * sizeof(glm::vec2) +
+               corners.capacity() * sizeof(Corner) + face_size.capacity() * sizeof(std::uint32_t) +
+               ahead.capacity() * sizeof(Ahead) + vertices.bytes() + seen.bytes() + mesh->memory_bytes() +
+               mesh->triangles.size() * kMeshBvhBytesPerTriangle;
+        if (used + transient > limit) stop = true;
+    }
+    // Looked at every 1,024 faces and every 16,384 triangles (one face may be millions of them).
+    bool should_stop() {
+        next_look = mesh->triangles.size() + 16384;
+        if (buffer->cancelled()) stop = true;
+        else spend();
+        return stop;
+    }
+    void bad_face(const std::string& why) {
+        if (!error.empty()) return;
+        error = why;
+        error_at = buffer->offset();
+        error_line = buffer->line();
+    }
+
+    std::uint32_t vertex(const Corner& c) {
+        const CornerKey key{std::uint32_t(c.index[0]), c.index[2] >= 0 ? std::uint32_t(c.index[2]) : kNoIndex,
+                            c.index[1] >= 0 ? std::uint32_t(c.index[1]) : kNoIndex};
+        bool added = false;
+        const std::uint32_t i = vertices.find_or_add(key, added);
+        if (!added) return i;
+        mesh->positions.push_back(v[key.v]);
+        // A corner without vn holds the normal (0, 0, 0), without vt the uv (NaN, NaN) (its
+        // triangle then takes its geometric normal, or uv (0, 0), as §9.3 says); once the file
+        // has given one, every vertex has one (those made before: none), and at the end all do.
+        if (!vn.empty()) {
+            mesh->normals.resize(i, glm::vec3(0.0f));
+            mesh->normals.push_back(key.n != kNoIndex ? vn[key.n] : glm::vec3(0.0f));
+        }
+        if (!vt.empty()) {
+            mesh->uvs.resize(i, glm::vec2(std::numeric_limits<float>::quiet_NaN()));
+            mesh->uvs.push_back(key.t != kNoIndex ? vt[key.t] : glm::vec2(std::numeric_limits<float>::quiet_NaN()));
+        }
+        return i;
+    }
+
+    // The triangles of a face whose corners are all defined; false to stop.
+    bool add_face(const Corner* c, std::uint32_t n) {
+        if ((faces++ % 1024 == 0 || mesh->triangles.size() >= next_look) && should_stop()) return false;
+        polygon.resize(n);
+        for (std::uint32_t k = 0; k < n; ++k) polygon[k] = v[std::size_t(c[k].index[0])];
+        split.clear();
+        split_polygon(polygon.data(), n, split);
+        if (n > kEarClipCorners) ++result->fans;
+        for (const auto& tri : split) {
+            const glm::vec3* const p[3] = {&polygon[tri[0]], &polygon[tri[1]], &polygon[tri[2]]};
+            const glm::vec3 normal = glm::cross(*p[1] - *p[0], *p[2] - *p[0]);
+            if (!finite(*p[0]) || !finite(*p[1]) || !finite(*p[2]) || !(glm::dot(normal, normal) > 0.0f)) {
+                ++result->degenerate;
+                continue;
+            }
+            if (seen.repeats(*mesh, p, std::uint32_t(mesh->triangles.size()))) {
+                ++result->duplicates;
+                continue;
+            }
+            mesh->triangles.push_back({vertex(c[tri[0]]), vertex(c[tri[1]]), vertex(c[tri[2]])});
+            if (mesh->triangles.size() >= next_look && should_stop()) return false;
+        }
+        return true;
+    }
+};
+
+void on_vertex(void* p, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z, tinyobj::real_t) {
+    Parse& s = *static_cast<Parse*>(p);
+    s.v.emplace_back(x, y, z);
+    s.spend();
+}
+
+void on_normal(void* p, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z) {
+    Parse& s = *static_cast<Parse*>(p);
+    s.vn.emplace_back(x, y, z);
+    s.spend();
+}
+
+void on_texcoord(void* p, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t) {
+    Parse& s = *static_cast<Parse*>(p);
+    s.vt.emplace_back(x, y);
+    s.spend();
+}
+
+// A face: its raw OBJ indices (1-based; negative count back from the last definition so far; 0 is
+// none for vt and vn, and for v either a 0 or no number at all) made 0-based and checked.
+void on_face(void* p, tinyobj::index_t* raw, int n) {
+    Parse& s = *static_cast<Parse*>(p);
+    if (s.stop || !s.error.empty()) return;
+    // tinyobjloader holds the face too while this runs, and its line.
+    s.spend(std::size_t(n) * (sizeof(tinyobj::index_t) + 2 * sizeof(Corner)));
+    if (s.stop) return;
+    std::int64_t ahead[3] = {-1, -1, -1};
+    s.face.clear();
+    for (int c = 0; c < n; ++c) {
+        const int given[3] = {raw[c].vertex_index, raw[c].texcoord_index, raw[c].normal_index};
+        Corner corner{};
+        for (int k = 0; k < 3; ++k) {
+            const std::int64_t r = given[k], defined = std::int64_t(s.count(k));
+            std::int64_t i = -1;
+            if (r > 0) {
+                i = r - 1;
+                if (i >= defined) ahead[k] = std::max(ahead[k], i);
+            } else if (r < 0) {
+                i = defined + r;
+                if (i < 0) {
+                    s.bad_face("face refers to " + std::string(kNames[k]) + " " + std::to_string(r) +
+                               ", but the file defines " + std::to_string(defined) +
+                               " before this line (indices start at 1; negative ones count back)");
+                    break;
+                }
+            } else if (k == 0) {
+                s.bad_face("a face has vertex index 0 or no number where a vertex index belongs (indices start "
+                           "at 1; negative ones count back)");
+                break;
+            }
+            corner.index[k] = std::int32_t(i);
+        }
+        if (!s.error.empty()) break;
+        s.face.push_back(corner);
+    }
+    if (!s.error.empty() || n < 3) return;  // a face of one or two corners draws nothing
+    const bool names_ahead = ahead[0] >= 0 || ahead[1] >= 0 || ahead[2] >= 0;
+    if (!names_ahead && !s.deferring) {
+        s.add_face(s.face.data(), std::uint32_t(n));
+        return;
+    }
+    s.deferring = true;
+    s.corners.insert(s.corners.end(), s.face.begin(), s.face.end());
+    s.face_size.push_back(std::uint32_t(n));
+    if (names_ahead) s.ahead.push_back({s.buffer->offset(), s.buffer->line(), {ahead[0], ahead[1], ahead[2]}});
+    s.spend();
+}
+
+template <class T>
+void release(std::vector<T>& v) {
+    std::vector<T>().swap(v);
+}
+
+// Reads the OBJ text `buffer` gives (counted ahead in `lines`) into `mesh`, which is left
+// cleared by the callers whenever this fails.
+ObjReadResult read_obj_into(TextBuffer& buffer, const LineCounts& lines, const std::string& name, TriangleMesh& mesh,
+                            const ObjLimits& limits) {
     ObjReadResult result;
+    mesh = TriangleMesh();
+    mesh.path = name;
     Parse s;
-    s.text = text;
+    s.buffer = &buffer;
+    buffer.stop_when(&s.stop);
+    s.mesh = &mesh;
+    s.result = &result;
     s.limit = limits.max_bytes;
     s.spend();  // the text is held while the rest is made
-    TextBuffer buffer(text, limits.cancel, s.stop);
-    s.buffer = &buffer;
-    if (s.used > s.limit) {
+    if (s.stop) {
         result.error = memory_error(limits.max_bytes);
         return result;
     }
+    s.v.reserve(lines.v);
+    s.vn.reserve(lines.vn);
+    s.vt.reserve(lines.vt);
+    // A vertex per position, and a few more where seams split one; no more than the faces'
+    // corners can make (a file of positions alone reserves no mesh for them).
+    const std::size_t vertices = std::min(lines.v + lines.v / 16, 3 * lines.f);
+    s.vertices.reserve(vertices);
+    mesh.positions.reserve(vertices);
+    if (lines.vn) mesh.normals.reserve(vertices);
+    if (lines.vt) mesh.uvs.reserve(vertices);
+    mesh.triangles.reserve(lines.f);
+    s.seen = SameTriangles(lines.f);
+    s.spend();
+    if (s.stop) {
+        result.error = memory_error(limits.max_bytes);
+        return result;
+    }
+
     std::istream in(&buffer);
     tinyobj::callback_t callbacks;
     callbacks.vertex_cb = on_vertex;
@@ -271,6 +519,10 @@ ObjReadResult read_obj_text_into(std::string_view text, const std::string& name,
     tinyobj::LoadObjWithCallback(in, callbacks, &s, nullptr, &warn, &err);
     if (buffer.cancelled()) {
         result.cancelled = true;
+        return result;
+    }
+    if (const std::string why = buffer.read_error(); !why.empty()) {
+        result.error = why;
         return result;
     }
     if (s.stop) {
@@ -288,75 +540,35 @@ ObjReadResult read_obj_text_into(std::string_view text, const std::string& name,
                   ", but the file has " + std::to_string(s.count(kind)) +
                   " (indices start at 1; negative ones count back)";
         s.error_at = a.at;
+        s.error_line = a.line;
         break;
     }
     if (!s.error.empty()) {
         result.error = s.error;
-        result.line = line_ending_at(text, s.error_at);
+        result.line = s.error_line;
         return result;
     }
-    std::vector<Parse::Ahead>().swap(s.ahead);
+    release(s.ahead);
 
-    // The faces split into triangles, each corner made a vertex of the mesh: one per distinct
-    // (v, vn, vt) of the file's corners (split where a seam gives one position two uvs), so a
-    // triangle costs one index triple, as pbrt and Embree keep meshes. A corner without vn holds the
-    // normal (0, 0, 0), without vt the uv (NaN, NaN): its triangle then takes its geometric normal,
-    // or uv (0, 0), as §9.3 says.
-    mesh = TriangleMesh();
-    mesh.path = name;
-    const bool with_normals = !s.vn.empty(), with_uvs = !s.vt.empty();
-    std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> vertex_of;
-    vertex_of.reserve(std::min(s.v.size(), s.corners.size()));
-    auto vertex = [&](const Corner& c) {
-        const CornerKey key{std::uint32_t(c.index[0]), c.index[2] >= 0 ? std::uint32_t(c.index[2]) : kNoIndex,
-                            c.index[1] >= 0 ? std::uint32_t(c.index[1]) : kNoIndex};
-        const auto [it, added] = vertex_of.try_emplace(key, std::uint32_t(mesh.positions.size()));
-        if (!added) return it->second;
-        mesh.positions.push_back(s.v[key.v]);
-        if (with_normals) mesh.normals.push_back(key.n != kNoIndex ? s.vn[key.n] : glm::vec3(0.0f));
-        if (with_uvs)
-            mesh.uvs.push_back(key.t != kNoIndex ? s.vt[key.t] : glm::vec2(std::numeric_limits<float>::quiet_NaN()));
-        return it->second;
-    };
-    SameTriangles seen(s.face_size.size());
-    std::vector<glm::vec3> polygon;
-    std::vector<std::array<std::uint32_t, 3>> split;
-    // Looked at every few thousand triangles: one face may be millions of them.
-    std::size_t next_look = 0;
-    auto stop = [&] {
-        next_look = mesh.triangles.size() + 16384;
-        if (buffer.cancelled()) return result.cancelled = true;
-        const std::size_t now = s.used + mesh.memory_bytes() + vertex_of.size() * kBytesPerCornerEntry +
-                                seen.bytes() + mesh.triangles.size() * kMeshBvhBytesPerTriangle;
-        if (now > limits.max_bytes) result.error = memory_error(limits.max_bytes);
-        return !result.error.empty();
-    };
+    // The faces kept, now that everything they name is defined.
     std::size_t corner = 0;
-    for (std::size_t f = 0; f < s.face_size.size(); ++f) {
-        const std::uint32_t n = s.face_size[f];
-        const Corner* c = &s.corners[corner];
-        corner += n;
-        if ((f % 1024 == 0 || mesh.triangles.size() >= next_look) && stop()) return result;
-        polygon.resize(n);
-        for (std::uint32_t k = 0; k < n; ++k) polygon[k] = s.v[std::size_t(c[k].index[0])];
-        split.clear();
-        split_polygon(polygon.data(), n, split);
-        if (n > kEarClipCorners) ++result.fans;
-        for (const auto& tri : split) {
-            const glm::vec3* const p[3] = {&polygon[tri[0]], &polygon[tri[1]], &polygon[tri[2]]};
-            const glm::vec3 normal = glm::cross(*p[1] - *p[0], *p[2] - *p[0]);
-            if (!finite(*p[0]) || !finite(*p[1]) || !finite(*p[2]) || !(glm::dot(normal, normal) > 0.0f)) {
-                ++result.degenerate;
-                continue;
-            }
-            if (seen.repeats(mesh, p, std::uint32_t(mesh.triangles.size()))) {
-                ++result.duplicates;
-                continue;
-            }
-            mesh.triangles.push_back({vertex(c[tri[0]]), vertex(c[tri[1]]), vertex(c[tri[2]])});
-            if (mesh.triangles.size() >= next_look && stop()) return result;
+    for (std::uint32_t n : s.face_size) {
+        if (!s.add_face(&s.corners[corner], n)) {
+            if (buffer.cancelled()) result.cancelled = true;
+            else result.error = memory_error(limits.max_bytes);
+            return result;
         }
+        corner += n;
     }
+    release(s.corners);
+    release(s.face_size);
+    s.vertices.release();
+    s.seen = SameTriangles(0);
+    if (!s.vn.empty()) mesh.normals.resize(mesh.positions.size(), glm::vec3(0.0f));
+    if (!s.vt.empty()) mesh.uvs.resize(mesh.positions.size(), glm::vec2(std::numeric_limits<float>::quiet_NaN()));
+    release(s.v);
+    release(s.vn);
+    release(s.vt);
     if (mesh.triangles.empty()) {
         result.error = result.degenerate > 0 ? "the file's " + std::to_string(result.degenerate) +
                                                    " triangles all have zero area: no triangle to draw"
@@ -381,20 +593,39 @@ ObjReadResult read_obj_text_into(std::string_view text, const std::string& name,
 
 ObjReadResult read_obj_text(std::string_view text, const std::string& name, TriangleMesh& mesh,
                             const ObjLimits& limits) {
-    ObjReadResult result = read_obj_text_into(text, name, mesh, limits);
+    LineCounts lines;
+    lines.feed(text.data(), text.data() + text.size());
+    TextBuffer buffer(text, limits.cancel);
+    ObjReadResult result = read_obj_into(buffer, lines, name, mesh, limits);
     if (!result.ok) mesh = TriangleMesh();  // nothing half-made is left
     return result;
 }
 
+ObjReadResult read_obj_file(FileReader& file, const std::string& name, TriangleMesh& mesh, const ObjLimits& limits) {
+    // The pieces read twice: counted first (a hint for the arrays), then parsed.
+    LineCounts lines;
+    std::vector<char> piece(TextBuffer::kPiece);
+    const std::size_t start = file.position();
+    for (std::size_t n; (n = file.read(piece.data(), piece.size())) > 0;) lines.feed(piece.data(), piece.data() + n);
+    file.seek(start);
+    std::vector<char>().swap(piece);
+    TextBuffer buffer(file, limits.cancel);
+    ObjReadResult result = read_obj_into(buffer, lines, name, mesh, limits);
+    if (!result.ok) mesh = TriangleMesh();
+    return result;
+}
+
 ObjReadResult read_obj(const std::string& path, TriangleMesh& mesh, const ObjLimits& limits) {
-    FileContents file = read_regular_file(path, limits.max_file_bytes, limits.cancel);
+    FileReader file(path, limits.max_file_bytes, limits.cancel);
     if (!file.ok()) {
         ObjReadResult r;
-        r.cancelled = file.cancelled;
-        if (!file.cancelled) r.error = "cannot read '" + path + "': " + file.error;
+        r.cancelled = file.info().cancelled;
+        if (!r.cancelled) r.error = "cannot read '" + path + "': " + file.info().error;
         return r;
     }
-    return read_obj_text(file.bytes, path, mesh, limits);
+    ObjReadResult r = read_obj_file(file, path, mesh, limits);
+    if (!r.ok && !r.cancelled && r.line == 0 && !file.info().error.empty()) r.error = "cannot read '" + path + "': " + r.error;
+    return r;
 }
 
 }  // namespace whitted

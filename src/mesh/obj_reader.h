@@ -9,14 +9,16 @@
 #include <string>
 #include <string_view>
 
+#include "base/read_file.h"
 #include "data/triangle_mesh.h"
 
 namespace whitted {
 
 struct ObjLimits {
     std::size_t max_file_bytes = std::size_t(256) << 20;  // read_obj: the file's size
-    // The memory the mesh may need: the file's text, what the parse keeps of it, and the mesh with
-    // its BVH (kMeshBvhBytesPerTriangle): refused as soon as the count passes it.
+    // The memory the mesh may need: the file's text held (all of it, or the piece being read),
+    // what the parse keeps of it, and the mesh with its BVH (kMeshBvhBytesPerTriangle): refused
+    // as soon as the count passes it.
     std::size_t max_bytes = std::size_t(-1);
     const std::atomic<bool>* cancel = nullptr;  // looked at every 64 KiB of text and every few faces
 };
@@ -32,11 +34,16 @@ struct ObjReadResult {
     std::size_t bytes = 0;       // what the mesh needs once built, with its BVH (for the memory estimate)
 };
 
-// Reads `path` through base/read_file.h (a regular file, within limits.max_file_bytes). Fails on
-// a file that cannot be read, a face that names a vertex, normal or texture coordinate the file
-// has not defined (or vertex 0, or no number), a mesh needing more memory than limits.max_bytes,
-// and a file with no (non-degenerate) triangle.
+// Reads `path` through base/read_file.h (a regular file, within limits.max_file_bytes), a piece at
+// a time as read_obj_file does. Fails on a file that cannot be read, a face that names a vertex,
+// normal or texture coordinate the file has not defined (or vertex 0, or no number), a mesh
+// needing more memory than limits.max_bytes, and a file with no (non-degenerate) triangle.
 ObjReadResult read_obj(const std::string& path, TriangleMesh& mesh, const ObjLimits& limits = {});
+
+// The same from a file opened through base/read_file.h, read 64 KiB at a time and never held
+// whole (`name` stands for the file in messages; a file that cannot be read to its end says why).
+ObjReadResult read_obj_file(FileReader& file, const std::string& name, TriangleMesh& mesh,
+                            const ObjLimits& limits = {});
 
 // The same from text in memory (`name` stands for the file in messages).
 ObjReadResult read_obj_text(std::string_view text, const std::string& name, TriangleMesh& mesh,

@@ -16,6 +16,21 @@ namespace {
 
 namespace fs = std::filesystem;
 
+TEST(ReadFile, AFileReadWholeTakesItsSizeNotTwice) {
+    // Larger than the door's 1 MiB pieces: asking whether the file ended must not grow the string
+    // (its capacity doubling, the text copied into the new block with the old one still held).
+    const std::string dir = test::make_temp_dir();
+    const std::string text(3 * 1024 * 1024 + 17, 'x');
+    const std::string file = test::write_file(dir, "big.txt", text);
+    const FileContents c = read_regular_file(file, std::size_t(64) << 20);
+    ASSERT_TRUE(c.ok()) << c.error;
+    EXPECT_EQ(c.bytes, text);
+    EXPECT_LE(c.bytes.capacity(), text.size() + 4096);
+    // Exactly at the limit still reads, one byte over still does not.
+    EXPECT_TRUE(read_regular_file(file, text.size()).ok());
+    EXPECT_FALSE(read_regular_file(file, text.size() - 1).ok());
+}
+
 TEST(ReadFile, OnlyRegularFilesWithinTheLimit) {
     const std::string dir = test::make_temp_dir();
     const std::string file = test::write_file(dir, "a.txt", "twelve bytes");

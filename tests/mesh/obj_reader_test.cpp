@@ -4,6 +4,8 @@
 
 #include <atomic>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -73,6 +75,125 @@ TEST(ObjReader, NegativeIndicesCountBackAndAPentagonMakesThreeTriangles) {
     float shoelace = 0;
     for (int i = 0; i < 5; ++i) shoelace += x[i] * y[(i + 1) % 5] - x[(i + 1) % 5] * y[i];
     EXPECT_NEAR(area, 0.5f * shoelace, 1e-5f);
+}
+
+TEST(ObjReader, FacesBeforeAndAfterOneNamingAVertexFurtherDownKeepTheirOrderAndCorners) {
+    // The first face comes before any vn (its vertices get the normal (0, 0, 0) once the file has
+    // normals), the second names v 4 before it is defined (kept until the file is read, as is every
+    // face after it), the third is a quad by negative indices, split along a diagonal (equal ones:
+    // 0-1-3 and 1-2-3, as tinyobjloader splits), sharing the vertex (v 3, vn 1) with the second.
+    TriangleMesh m;
+    const ObjReadResult r = read_obj_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nvn 0 0 1\nf 1//1 3//1 4//1\n"
+                                          "v 0 1 0\nv 2 0 0\nv 2 1 0\nf -5//1 -2//1 -1//1 -4//1\n",
+                                          "ahead.obj", m);
+    ASSERT_TRUE(r.ok) << r.error;
+    const std::vector<TriangleIndices> triangles{{0, 1, 2}, {3, 4, 5}, {6, 7, 4}, {7, 8, 4}};
+    EXPECT_EQ(std::vector<TriangleIndices>(m.triangles.begin(), m.triangles.end()), triangles);
+    const std::vector<glm::vec3> positions{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0},
+                                           {0, 1, 0}, {1, 0, 0}, {2, 0, 0}, {2, 1, 0}};
+    EXPECT_EQ(std::vector<glm::vec3>(m.positions.begin(), m.positions.end()), positions);
+    const glm::vec3 none(0.0f), up(0, 0, 1);
+    const std::vector<glm::vec3> normals{none, none, none, up, up, up, up, up, up};
+    EXPECT_EQ(std::vector<glm::vec3>(m.normals.begin(), m.normals.end()), normals);
+    EXPECT_TRUE(m.uvs.empty());
+}
+
+TEST(ObjReader, ReadingHoldsNoCopyOfTheFaces) {
+    // A 200 x 200 grid of quads written as 80,000 triangles on 40,401 shared vertices. Beyond the
+    // text and what the mesh keeps (its arrays and its BVH's estimate, r.bytes), reading it needs
+    // the file's v (12 bytes a vertex), a vertex table (about 20 bytes a vertex) and the repeated-
+    // triangle table (8 to 16 bytes a triangle): under 48 bytes a triangle. A copy of every corner
+    // of the faces alone would be 36, and a heap node per vertex 64 more.
+    constexpr int kN = 200;
+    std::string text;
+    for (int j = 0; j <= kN; ++j)
+        for (int i = 0; i <= kN; ++i) text += "v " + std::to_string(i) + " " + std::to_string(j) + " 0\n";
+    for (int j = 0; j < kN; ++j)
+        for (int i = 0; i < kN; ++i) {
+            const std::string a = std::to_string(j * (kN + 1) + i + 1), b = std::to_string(j * (kN + 1) + i + 2),
+                              c = std::to_string((j + 1) * (kN + 1) + i + 2),
+                              d = std::to_string((j + 1) * (kN + 1) + i + 1);
+            text += "f " + a + " " + b + " " + c + "\nf " + a + " " + c + " " + d + "\n";
+        }
+    TriangleMesh m;
+    const ObjReadResult all = read_obj_text(text, "grid.obj", m);
+    ASSERT_TRUE(all.ok) << all.error;
+    ASSERT_EQ(m.triangles.size(), std::size_t(2 * kN * kN));
+    ASSERT_EQ(m.positions.size(), std::size_t((kN + 1) * (kN + 1)));
+    ObjLimits limits;
+    limits.max_bytes = text.size() + all.bytes + 48 * m.triangles.size();
+    const ObjReadResult r = read_obj_text(text, "grid.obj", m, limits);
+    EXPECT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(m.triangles.size(), std::size_t(2 * kN * kN));
+    // Below what the finished mesh needs with the text: refused, with the same message as ever.
+    limits.max_bytes = text.size() + all.bytes - 1;
+    const ObjReadResult small = read_obj_text(text, "grid.obj", m, limits);
+    EXPECT_FALSE(small.ok);
+    EXPECT_NE(small.error.find("the mesh needs more than the"), std::string::npos) << small.error;
+    EXPECT_NE(small.error.find("(--max-memory; a scene's objects, textures and meshes share it)"), std::string::npos);
+}
+
+TEST(ObjReader, AFileReadInPiecesGivesTheSameMeshAndTheSameErrorLines) {
+    // Over 200 KiB (a file is parsed 64 KiB at a time): lines ending in \n, \r\n and a lone \r
+    // in turn, a \r\n split across the first piece boundary (its \r the piece's last byte), and
+    // the first face naming a later vertex past that boundary, so that its line is counted with
+    // the pieces before read again.
+    std::string text;
+    int lines = 0;
+    auto line = [&](const std::string& s) {
+        static const char* const ends[3] = {"\n", "\r\n", "\r"};
+        text += s + ends[lines % 3];
+        ++lines;
+    };
+    int vertices = 0;
+    auto quad = [&](float x) {
+        for (int k = 0; k < 4; ++k) line("v " + std::to_string(x + (k == 1 || k == 2)) + " " + std::to_string(k / 2) + " 0");
+        vertices += 4;
+        line("vn 0 0 1");
+        line("f -4//-1 -3//-1 -2//-1 -1//-1");
+    };
+    constexpr std::size_t kPiece = 64 << 10;
+    for (int q = 0; text.size() < kPiece - 200; ++q) quad(float(q));
+    while (lines % 3 != 1) line("# to a \\r\\n ending");
+    // A comment whose \r\n ending puts the \r at the piece's last byte.
+    std::string comment(kPiece - 1 - text.size(), '-');
+    comment[0] = '#';
+    line(comment);
+    ASSERT_EQ(text[kPiece - 1], '\r');
+    ASSERT_EQ(text[kPiece], '\n');
+    for (int q = 0; text.size() < 2 * kPiece; ++q) quad(1000.0f + float(q));
+    line("f " + std::to_string(vertices + 1) + " " + std::to_string(vertices + 2) + " " + std::to_string(vertices + 3));
+    for (int k = 0; k < 3; ++k) line("v " + std::to_string(k == 1) + " " + std::to_string(k == 2) + " 5");
+    vertices += 3;
+    for (int q = 0; text.size() < 3 * kPiece + 5000; ++q) quad(2000.0f + float(q));
+    const std::string dir = test::make_temp_dir();
+    const std::string good = test::write_file(dir, "good.obj", text);
+    TriangleMesh from_text, from_file;
+    const ObjReadResult a = read_obj_text(text, "good.obj", from_text);
+    const ObjReadResult b = read_obj(good, from_file);
+    ASSERT_TRUE(a.ok) << a.error;
+    ASSERT_TRUE(b.ok) << b.error;
+    const std::size_t quads = std::size_t(vertices - 3) / 4;
+    EXPECT_EQ(from_file.triangles.size(), 2 * quads + 1);
+    EXPECT_EQ(std::vector<TriangleIndices>(from_file.triangles.begin(), from_file.triangles.end()),
+              std::vector<TriangleIndices>(from_text.triangles.begin(), from_text.triangles.end()));
+    EXPECT_EQ(std::vector<glm::vec3>(from_file.positions.begin(), from_file.positions.end()),
+              std::vector<glm::vec3>(from_text.positions.begin(), from_text.positions.end()));
+    EXPECT_EQ(std::vector<glm::vec3>(from_file.normals.begin(), from_file.normals.end()),
+              std::vector<glm::vec3>(from_text.normals.begin(), from_text.normals.end()));
+
+    // A face naming vertex 0 on line `lines + 1`, in the fourth piece; and a face naming a vertex
+    // never defined after it, whose error is not the first.
+    const int bad_line = lines + 1;
+    line("f 1 0 2");
+    line("f 1 2 " + std::to_string(vertices + 100));
+    const std::string bad = test::write_file(dir, "bad.obj", text);
+    TriangleMesh m;
+    const ObjReadResult c = read_obj(bad, m);
+    EXPECT_FALSE(c.ok);
+    EXPECT_EQ(c.line, bad_line) << c.error;
+    EXPECT_NE(c.error.find("vertex index 0"), std::string::npos) << c.error;
+    EXPECT_EQ(read_obj_text(text, "bad.obj", m).line, bad_line);
 }
 
 TEST(ObjReader, DegenerateTrianglesAreSkippedAndCounted) {
