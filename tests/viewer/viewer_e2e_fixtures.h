@@ -67,6 +67,7 @@ protected:
         blue_ = cli_image(dir_ + "/blue.sc", kW, kH, dir_ + "/blue.png");
     }
     std::unique_ptr<Child> start_viewer(const std::vector<std::string>& extra) {
+        EXPECT_TRUE(x_.ensure_running(dir_, why_)) << why_;
         std::vector<std::string> argv{WHITTED_VIEWER_PATH, scene_, "--width", std::to_string(kW), "--height",
                                       std::to_string(kH), "--threads", "2", "--ready-file", ready_};
         argv.insert(argv.end(), extra.begin(), extra.end());

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iostream>
 #include <map>
 #include <sstream>
 #include <thread>
@@ -137,8 +138,10 @@ public:
         for (long number = first; number < first + 8; ++number) {
             if (fs::exists("/tmp/.X" + std::to_string(number) + "-lock")) continue;
             server_ = std::make_unique<Child>(
+                // -noreset: an X server resets when its last client leaves (our probe of its
+                // socket, xwd, xdotool), and a client that connects meanwhile can be refused.
                 std::vector<std::string>{xvfb, ":" + std::to_string(number), "-screen", "0", "1280x1024x24",
-                                         "-nolisten", "tcp"},
+                                         "-nolisten", "tcp", "-noreset"},
                 dir + "/xvfb.log");
             if (wait_until_ours(number)) {
                 display_ = ":" + std::to_string(number);
@@ -150,6 +153,24 @@ public:
         return false;
     }
     const std::string& display() const { return display_; }
+
+    // Before a client is started: the server still runs and still accepts connections. If not (seen
+    // in CI: a viewer could not open the display of a server that had started), why is printed for
+    // the log and another server is started; false if none could be.
+    bool ensure_running(const std::string& dir, std::string& why) {
+        const std::string number = display_.empty() ? "" : display_.substr(1);
+        const int exited = server_ ? server_->wait_exit(0ms) : -2;
+        if (exited == -1 && accepts_connections(number)) return true;
+        std::cerr << "note: the X server of " << display_ << " went away before the client started ("
+                  << (exited == -1 ? "still running, its socket " + std::string(fs::exists("/tmp/.X11-unix/X" + number)
+                                                                                    ? "there but refusing connections"
+                                                                                    : "file gone")
+                                   : "exited with " + std::to_string(exited))
+                  << "; its log: " << (server_ ? server_->output() : "") << "): starting another\n";
+        server_.reset();
+        display_.clear();
+        return start(dir, why);
+    }
 
 private:
     // Until the server accepts connections and the lock file names it, or it has exited.
