@@ -47,6 +47,25 @@ Bounds swept_bounds(const Motion& motion, const Instance& inst, const Bounds* me
     return box.padded(1e-5f);
 }
 
+std::vector<std::uint32_t> build_motion_tree(MotionSet& set, int threads, const std::atomic<bool>* cancel) {
+    std::vector<std::uint32_t> order;
+    // A moving instance's test evaluates its transform (a few 4×4 products) before the shape's:
+    // dear next to a box test, so small leaves.
+    const BvhBuildCosts costs{0.5f, 4};
+    static_cast<BasicBvh<Bvh4Node>&>(set.tree) = build_bvh_over_boxes(
+        set.count(), [&](std::uint32_t k) { return set.swept[k]; }, costs, threads, order, cancel);
+    if (cancel && cancel->load(std::memory_order_relaxed)) return {};
+    std::vector<std::uint32_t> chain(order.size());
+    std::vector<Bounds> swept(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        chain[k] = set.chain[order[k]];
+        swept[k] = set.swept[order[k]];
+    }
+    set.chain = std::move(chain);
+    set.swept = std::move(swept);
+    return order;
+}
+
 bool ray_crosses_box(const Ray& ray, const Bounds& box, float t_min, float t_max) {
     float lo = t_min, hi = t_max;
     for (int a = 0; a < 3; ++a) {

@@ -5,7 +5,8 @@ namespace {
 
 // The moving instances to the end (in their order), out of the BVH: each gets its motion and its
 // box swept over the shutter. Returns the instance order (new place → old place).
-std::vector<std::uint32_t> split_moving(Scene& scene, const Shutter& shutter) {
+std::vector<std::uint32_t> split_moving(Scene& scene, const Shutter& shutter, int threads,
+                                       const std::atomic<bool>* cancel) {
     SceneData& data = scene.data;
     std::vector<char> moves(data.instances.size(), 0);
     for (const SceneData::Moving& m : data.moving) moves[m.instance] = 1;
@@ -24,6 +25,10 @@ std::vector<std::uint32_t> split_moving(Scene& scene, const Shutter& shutter) {
             swept_bounds(motion, inst, inst.kind == ShapeKind::Mesh ? &data.meshes[inst.mesh].box : nullptr, shutter));
     }
     scene.motion.motions = std::move(data.motions);
+    const std::vector<std::uint32_t> leaves = build_motion_tree(scene.motion, threads, cancel);
+    if (leaves.size() != data.moving.size()) return {};  // cancelled
+    const std::vector<std::uint32_t> moving(order.begin() + scene.motion.first, order.end());
+    for (std::size_t k = 0; k < leaves.size(); ++k) order[scene.motion.first + k] = moving[leaves[k]];
     std::vector<Instance> reordered(order.size());
     for (std::size_t i = 0; i < order.size(); ++i) reordered[i] = data.instances[order[i]];
     data.instances = std::move(reordered);
@@ -55,7 +60,8 @@ Scene accelerate(SceneData data, int threads, const std::atomic<bool>* cancel, c
         scene.data.provenance.reorder_instances(order);
         return scene;
     }
-    std::vector<std::uint32_t> order = split_moving(scene, *shutter);
+    std::vector<std::uint32_t> order = split_moving(scene, *shutter, threads, cancel);
+    if (cancelled()) return scene;
     std::vector<Instance> still(scene.data.instances.begin(), scene.data.instances.begin() + scene.motion.first);
     std::vector<std::uint32_t> still_order;
     scene.bvh = build_bvh(still, threads, &scene.data.meshes, &still_order, cancel);
@@ -74,17 +80,19 @@ bool Scene::intersect_moving(const Ray& ray, float t_max, Hit& hit) const {
     std::uint32_t best_index = 0;
     ShapePart best_part = kPartSide;
     bvh_detail::TriangleState tri;
-    for (std::uint32_t k = 0; k < motion.count(); ++k) {
-        if (!ray_crosses_box(ray, motion.swept[k], 0.0f, best)) continue;
-        const std::uint32_t i = motion.first + k;
-        const Instance inst = motion.at(k, data.instances[i], ray.time);
-        if (inst.kind == ShapeKind::Mesh)
-            bvh_detail::offer_mesh_nearest(mesh_bvhs[inst.mesh], inst, ray, i, 0.0f, t_max, best, best_index,
-                                           best_part, found, tri);
-        else
-            bvh_detail::offer_nearest(bvh_detail::intersect_instance(inst, ray), i, 0.0f, t_max, best, best_index,
-                                      best_part, found);
-    }
+    bvh_detail::walk_nearest(motion.tree, ray, 0.0f, best, [&](std::uint32_t first, std::uint32_t end) {
+        for (std::uint32_t k = first; k < end; ++k) {
+            if (!ray_crosses_box(ray, motion.swept[k], 0.0f, best)) continue;
+            const std::uint32_t i = motion.first + k;
+            const Instance inst = motion.at(k, data.instances[i], ray.time);
+            if (inst.kind == ShapeKind::Mesh)
+                bvh_detail::offer_mesh_nearest(mesh_bvhs[inst.mesh], inst, ray, i, 0.0f, t_max, best, best_index,
+                                               best_part, found, tri);
+            else
+                bvh_detail::offer_nearest(bvh_detail::intersect_instance(inst, ray), i, 0.0f, t_max, best,
+                                          best_index, best_part, found);
+        }
+    });
     if (!found) return false;
     hit = bvh_detail::make_hit(data.instances.data(), best, best_index, best_part, tri);
     return true;

@@ -55,12 +55,16 @@ struct Scene {
     template <class Visit>
     bool visit_crossings(const Ray& ray, float t_max, Visit&& visit) const {
         if (!for_each_crossing(bvh, data.instances, &mesh_bvhs, ray, 0.0f, t_max, visit)) return false;
-        for (std::uint32_t k = 0; k < motion.count(); ++k) {
-            if (!ray_crosses_box(ray, motion.swept[k], 0.0f, t_max)) continue;
-            const Instance inst = motion.at(k, data.instances[motion.first + k], ray.time);
-            if (!bvh_detail::visit_instance(inst, motion.first + k, &mesh_bvhs, ray, 0.0f, t_max, visit)) return false;
-        }
-        return true;
+        if (motion.empty()) return true;
+        return bvh_detail::walk_any(motion.tree, ray, 0.0f, t_max, [&](std::uint32_t first, std::uint32_t end) {
+            for (std::uint32_t k = first; k < end; ++k) {
+                if (!ray_crosses_box(ray, motion.swept[k], 0.0f, t_max)) continue;
+                const Instance inst = motion.at(k, data.instances[motion.first + k], ray.time);
+                if (!bvh_detail::visit_instance(inst, motion.first + k, &mesh_bvhs, ray, 0.0f, t_max, visit))
+                    return false;
+            }
+            return true;
+        });
     }
 
     // Instance i as the ray at shutter fraction `time` meets it: where a moving one is then.

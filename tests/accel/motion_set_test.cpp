@@ -136,5 +136,60 @@ TEST(MotionSet, RaysMeetTheInstanceAtTheirTime) {
     EXPECT_NEAR(at[3][0], 0.5f, 1e-6f);
 }
 
+// Many moving instances among still ones: the nearest hit through the BVHs (the still one and
+// the one over the swept boxes) is the one found by testing every instance placed at the ray's
+// time, and single rays and packets agree.
+TEST(MotionSet, NearestHitIsTheBruteForceOneAtTheRaysTime) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    SceneData data;
+    data.materials.resize(1);
+    for (int i = 0; i < 300; ++i) {
+        const glm::dmat4 place = glm::translate(glm::dmat4(1.0), glm::dvec3(8 * u(rng), 8 * u(rng), 8 * u(rng))) *
+                                 glm::scale(glm::dmat4(1.0), glm::dvec3(0.5 + 0.4 * u(rng)));
+        const ShapeKind kind = ShapeKind(i % 5);
+        data.instances.push_back(make_instance(place, kind, 0));
+        if (i % 3 == 0) continue;  // a third stand still
+        Motion m;
+        m.then_matrix(place);
+        if (i % 2) m.then_velocity(glm::dvec3(3 * u(rng), 3 * u(rng), 3 * u(rng)));
+        else m.then_spin(glm::dvec3(u(rng), 1.0, u(rng)), 300 * u(rng));
+        data.motions.push_back(m);
+        data.moving.push_back({std::uint32_t(i), std::uint32_t(data.motions.size() - 1)});
+    }
+    const std::size_t moving = data.moving.size();
+    const Shutter shutter{-0.5, 1.0};
+    const Scene scene = accelerate(std::move(data), 2, nullptr, &shutter);
+    ASSERT_EQ(scene.motion.count(), moving);
+    ASSERT_EQ(scene.motion.first, 300u - moving);
+    int hits = 0;
+    for (int n = 0; n < 40; ++n) {
+        Ray rays[kPacketSize];
+        const glm::vec3 origin(12 * u(rng), 12 * u(rng), 20);
+        for (Ray& ray : rays) {
+            ray = Ray{origin, glm::normalize(glm::vec3(0.5f * u(rng), 0.5f * u(rng), -1.0f)), float(0.5 + 0.5 * u(rng))};
+        }
+        Hit packet[kPacketSize];
+        const unsigned found = scene.intersect(rays, (1u << kPacketSize) - 1, packet);
+        for (int l = 0; l < kPacketSize; ++l) {
+            std::vector<Instance> placed;
+            for (std::uint32_t i = 0; i < scene.data.instances.size(); ++i)
+                placed.push_back(scene.instance_at(i, rays[l].time));
+            Hit want, got;
+            const bool hit = intersect_nearest_brute_force(placed, rays[l], 0.0f, Scene::kInfinity, want);
+            ASSERT_EQ(scene.intersect(rays[l], got), hit) << n << "/" << l;
+            ASSERT_EQ(bool((found >> l) & 1), hit);
+            EXPECT_EQ(scene.occluded(rays[l], Scene::kInfinity), hit);
+            if (!hit) continue;
+            ++hits;
+            EXPECT_EQ(got.instance, want.instance);
+            EXPECT_EQ(got.t, want.t);
+            EXPECT_EQ(packet[l].instance, want.instance);
+            EXPECT_EQ(packet[l].t, want.t);
+        }
+    }
+    EXPECT_GT(hits, 40);  // enough of the rays meet something for the comparison to say something
+}
+
 }  // namespace
 }  // namespace whitted
