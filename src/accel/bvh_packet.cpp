@@ -76,7 +76,7 @@ struct PacketRays {
     __m128 inv_lo[3], inv_hi[3];
 
     PacketRays(const Ray (&rays)[kPacketSize], unsigned active) {
-        static_assert(sizeof(Ray) == 6 * sizeof(float) && offsetof(Ray, direction) == 3 * sizeof(float));
+        static_assert(offsetof(Ray, origin) == 0 && offsetof(Ray, direction) == 3 * sizeof(float));  // read as floats 0-5
         const int first = __builtin_ctz(active);
         const __m128 sign = _mm_set1_ps(-0.0f), tiny = _mm_set1_ps(1e-30f), one = _mm_set1_ps(1.0f);
         const __m128 nan = _mm_set1_ps(std::numeric_limits<float>::quiet_NaN());

@@ -8,6 +8,10 @@ namespace whitted {
 struct Ray {
     glm::vec3 origin{0.0f};
     glm::vec3 direction{0.0f, 0.0f, -1.0f};
+    // Where in the shutter interval the ray's camera sample was taken: 0 as it opens, 1 as it
+    // closes. Only a render with a shutter over a moving scene reads it (accel/motion_set.h); every
+    // ray a sample spawns carries its camera ray's.
+    float time = 0.0f;
     glm::vec3 at(float t) const { return origin + t * direction; }
 };
 

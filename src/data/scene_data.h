@@ -10,6 +10,7 @@
 #include "data/light.h"
 #include "data/lighting_model.h"
 #include "data/material.h"
+#include "data/motion.h"
 #include "data/provenance.h"
 #include "data/texture_image.h"
 #include "data/triangle_mesh.h"
@@ -30,6 +31,15 @@ struct SceneData {
     glm::vec3 ambient_intensity{1.0f};
     LightingModel lighting = LightingModel::Labs;  // §7, or §9.5 (integrator/cs1230_integrator.h)
     Provenance provenance;  // where each instance, material and light came from (the inspector's)
+    // The instances that move (`velocity`, `angularrate` in their chain of trans blocks): each
+    // one's object→world map as a function of time, shared by the objects of one chain. Their
+    // Instance above is placed at the load's time, as for a render without a shutter.
+    struct Moving {
+        std::uint32_t instance;  // index into instances
+        std::uint32_t motion;    // index into motions
+    };
+    std::vector<Motion> motions;
+    std::vector<Moving> moving;
 };
 
 }  // namespace whitted

@@ -14,6 +14,7 @@
 #include "base/diagnostic.h"
 #include "data/light_type.h"
 #include "data/lighting_model.h"
+#include "data/motion.h"
 #include "data/shape_kind.h"
 
 namespace whitted {
@@ -90,6 +91,9 @@ struct SubgraphRef {
 
 struct TransDesc {
     glm::mat4 matrix{1.0f};  // T1 · T2 · … · Tn in the order written
+    // With `velocity` or `angularrate`: the same product as a function of time (matrix is it at
+    // the load's time); empty for a block that does not move.
+    Motion motion;
     std::vector<ObjectDesc> objects;
     std::vector<SubgraphRef> subgraphs;
     SourceLoc loc;

@@ -258,6 +258,7 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
         int subgraph;
         glm::dmat4 parent;
         std::uint32_t link;
+        std::int64_t motion = -1;  // a moving chain above: its index in scene.motions
     };
     // The file's lines a chain can pass through, once each: every mastersubgraph first (a
     // `subgraph` line's site names its target's), then per trans block its own and its references'.
@@ -305,6 +306,17 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
         for (std::size_t i = 0; i < children.size(); ++i) {
             const TransDesc& t = children[i];
             const glm::dmat4 world = f.parent * glm::dmat4(t.matrix);
+            // The chain as a function of time, when it moves: the parent's, then this block's.
+            std::int64_t motion = -1;
+            if (f.motion >= 0 || !t.motion.empty()) {
+                Motion chain;
+                if (f.motion >= 0) chain = scene.motions[std::size_t(f.motion)];
+                else chain.then_matrix(f.parent);
+                if (t.motion.empty()) chain.then_matrix(glm::dmat4(t.matrix));
+                else chain.then(t.motion);
+                motion = std::int64_t(scene.motions.size());
+                scene.motions.push_back(std::move(chain));
+            }
             if (!t.objects.empty()) {
                 if (std::string why = unusable_transform(world); !why.empty()) {
                     result.diagnostics.push_back({Severity::Error, t.objects.front().loc, why});
@@ -319,6 +331,8 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
                 return trans_link;
             };
             for (const ObjectDesc& o : t.objects) {
+                if (motion >= 0)
+                    scene.moving.push_back({std::uint32_t(scene.instances.size()), std::uint32_t(motion)});
                 scene.instances.push_back(make_instance(world, o.kind, material_index(o)));
                 prov.add_instance(link());
                 if (++work >= next_look && stop()) return result;
@@ -328,7 +342,7 @@ FlattenResult flatten(const SceneDescription& desc, const FlattenLimits& limits)
                 // empty one would otherwise be 2^41 steps for no object at all.
                 const std::uint32_t ref_site = site + 1 + r;
                 if (int child = target[ref_site]; child >= 0 && counter.instances(child) > 0)
-                    stack.push_back({child, world, prov.add_link(link(), ref_site)});
+                    stack.push_back({child, world, prov.add_link(link(), ref_site), motion});
             }
         }
     }

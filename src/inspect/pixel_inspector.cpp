@@ -265,7 +265,8 @@ PixelReport inspect_pixel(const Scene& scene, const RenderJob& job, int x, int y
     for (int i = 0; i < n; ++i) {
         if (cancelled()) return r;
         const SampleKey key{std::uint32_t(x), std::uint32_t(y), std::uint32_t(i)};
-        const Ray ray = camera_sample_ray(camera, sampler, job.width, job.height, x, y, key.index);
+        const Ray ray = camera_sample_ray(camera, sampler, job.width, job.height, x, y, key.index,
+                                          !scene.motion.empty());
         ShadingRecorder rec;
         RayCounts counts;
         const glm::vec3 c = by_course ? course.radiance(ray, key, sampler, counts, rec)

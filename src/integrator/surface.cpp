@@ -6,7 +6,7 @@
 namespace whitted {
 
 Surface surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
-    const Instance& inst = scene.data.instances[hit.instance];
+    const Instance inst = scene.instance_at(hit.instance, ray.time);  // a moving one where the ray met it
     const Ray object_ray = to_object_space(inst, ray);
     const glm::vec3 p = object_ray.at(hit.t);
     Surface s;

@@ -86,23 +86,24 @@ LightSample WhittedIntegrator::light_sample(const Light& light, std::size_t li, 
 
 // What reaches `start` (just off the lit side of a surface) from the light sample: 1 if nothing
 // is in the way, 0 behind anything opaque, the product of the transparent colours crossed otherwise.
-glm::vec3 WhittedIntegrator::shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start) const {
+glm::vec3 WhittedIntegrator::shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start,
+                                           float time) const {
     if (query_from_light(light, ls, start) && !conventions_.shadows_beyond_light) {
         // From the light to the point (t in (0, 1)): the nearest thing on the way decides it,
         // unless it is glass, whose every crossing on the way counts.
         Hit h;
-        if (!scene_.intersect(Ray{ls.position, start - ls.position}, h, 1.0f)) return glm::vec3(1.0f);
+        if (!scene_.intersect(Ray{ls.position, start - ls.position, time}, h, 1.0f)) return glm::vec3(1.0f);
         if (!scene_.material(h).is_transparent()) return glm::vec3(0.0f);
     }
-    return through_glass(ls, start);
+    return through_glass(ls, start, time);
 }
 
 // The full query from the point toward the light: every transparent surface crossed tints it.
-glm::vec3 WhittedIntegrator::through_glass(const LightSample& ls, const glm::vec3& start) const {
+glm::vec3 WhittedIntegrator::through_glass(const LightSample& ls, const glm::vec3& start, float time) const {
     const float reach = std::isinf(ls.distance) || conventions_.shadows_beyond_light ? kInfinity
                                                                                      : glm::length(ls.position - start);
-    if (conventions_.opaque_shadows) return glm::vec3(scene_.occluded(Ray{start, ls.to_light}, reach) ? 0.0f : 1.0f);
-    return glass_transmittance(scene_, Ray{start, ls.to_light}, reach);
+    if (conventions_.opaque_shadows) return glm::vec3(scene_.occluded(Ray{start, ls.to_light, time}, reach) ? 0.0f : 1.0f);
+    return glass_transmittance(scene_, Ray{start, ls.to_light, time}, reach);
 }
 
 void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sampler, glm::vec3 (&out)[kPacketSize],
@@ -137,7 +138,7 @@ void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sample
             const LightSample ls = sample_light(light, points[l].s.point);
             if (!faces_light(points[l], ls) || !query_from_light(light, ls, points[l].above))
                 continue;  // not lit at all, or asked from the point (shadow_factor)
-            back[l] = Ray{light.position, points[l].above - light.position};
+            back[l] = Ray{light.position, points[l].above - light.position, points[l].time};
             want |= 1u << l;
         }
         if (!want) continue;
@@ -187,6 +188,7 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::shading_point(const Ray& ray,
     if (variant_ && conventions_.normals_by_m)
         p.s.normal = normal_by_m(scene_.data.instances[hit.instance], p.s.object_normal);
     p.dir = glm::normalize(ray.direction);
+    p.time = ray.time;
     p.outside = glm::dot(p.s.normal, -p.dir) >= 0.0f;
     p.n = p.outside ? p.s.normal : -p.s.normal;  // faces the viewer: lighting only
     const float offset = variant_ && conventions_.no_offset ? 0.0f : surface_offset(p.s.point);
@@ -255,8 +257,8 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
         const glm::vec3 shadow = known == ShadowQuery::Lit                  ? glm::vec3(1.0f)
                                  : known == ShadowQuery::Blocked            ? glm::vec3(0.0f)
                                  : li < 32 && (conventions_.unshadowed_lights >> li) & 1u ? glm::vec3(1.0f)
-                                 : known == ShadowQuery::Glass || depth > 0 ? through_glass(ls, above)
-                                                                            : shadow_factor(light, ls, above);
+                                 : known == ShadowQuery::Glass || depth > 0 ? through_glass(ls, above, p.time)
+                                                                            : shadow_factor(light, ls, above, p.time);
         if (max_component(shadow) <= 0.0f) {
             if constexpr (Recorder::kRecords) rec.light(LightTerm{li, ls, true, n_dot_l, shadow, {}, {}});
             continue;
@@ -290,15 +292,15 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
                 secondary_direction(refracted, n, false, m.gloss, dimension::gloss_refract(depth), ctx, d) &&
                 !(limited = !ctx.take_ray())) {
                 ++counts.refracted;
-                rec.secondary(SecondaryKind::Refract, SecondaryRecord::Outcome::Traced, Ray{below, d}, w);
+                rec.secondary(SecondaryKind::Refract, SecondaryRecord::Outcome::Traced, Ray{below, d, p.time}, w);
                 glm::vec3 c;
                 if (diff) {
                     RayDifferential next;  // none from here on if an auxiliary ray is totally reflected
                     const bool carried = refracted_differential(s.point, n, outside ? 1.0f : -1.0f, eta, diff->ray,
                                                                 diff->surface, next);
-                    c = trace(Ray{below, d}, depth + 1, w, ctx, counts, rec, carried ? &next : nullptr);
+                    c = trace(Ray{below, d, p.time}, depth + 1, w, ctx, counts, rec, carried ? &next : nullptr);
                 } else {
-                    c = trace(Ray{below, d}, depth + 1, w, ctx, counts, rec);
+                    c = trace(Ray{below, d, p.time}, depth + 1, w, ctx, counts, rec);
                 }
                 color += m.transparent * c;
                 rec.secondary_color(c, m.transparent * c);
@@ -307,7 +309,7 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
                               limited                        ? SecondaryRecord::Outcome::RayLimit
                               : max_component(w) >= kMinWeight ? SecondaryRecord::Outcome::OffSurface
                                                                : SecondaryRecord::Outcome::TooWeak,
-                              Ray{below, refracted}, w);
+                              Ray{below, refracted, p.time}, w);
             }
         } else {
             if (!conventions_.no_total_internal_reflection)
@@ -324,14 +326,14 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
                                 ctx, d) &&
             !(limited = !ctx.take_ray())) {
             ++counts.reflected;
-            rec.secondary(SecondaryKind::Reflect, SecondaryRecord::Outcome::Traced, Ray{above, d}, w);
+            rec.secondary(SecondaryKind::Reflect, SecondaryRecord::Outcome::Traced, Ray{above, d, p.time}, w);
             glm::vec3 c;
             if (diff) {
                 const RayDifferential next =
                     reflected_differential(s.point, n, outside ? 1.0f : -1.0f, diff->ray, diff->surface);
-                c = trace(Ray{above, d}, depth + 1, w, ctx, counts, rec, &next);
+                c = trace(Ray{above, d, p.time}, depth + 1, w, ctx, counts, rec, &next);
             } else {
-                c = trace(Ray{above, d}, depth + 1, w, ctx, counts, rec);
+                c = trace(Ray{above, d, p.time}, depth + 1, w, ctx, counts, rec);
             }
             color += reflect_weight * c;
             rec.secondary_color(c, reflect_weight * c);
@@ -340,7 +342,7 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
                           limited                        ? SecondaryRecord::Outcome::RayLimit
                           : max_component(w) >= kMinWeight ? SecondaryRecord::Outcome::OffSurface
                                                            : SecondaryRecord::Outcome::TooWeak,
-                          Ray{above, dir - 2.0f * glm::dot(dir, n) * n}, w);
+                          Ray{above, dir - 2.0f * glm::dot(dir, n) * n, p.time}, w);
         }
     }
     rec.done(color);

@@ -55,6 +55,7 @@ private:
         Surface s;
         glm::vec3 dir, n, above, below;
         bool outside;
+        float time;  // the ray's (Ray::time): its shadow and secondary rays meet the scene then too
         // Whether the Differentials beside it hold the hit's footprint: set by filter_texture, read
         // only for rays that carry differentials (which a filter reading footprints gives).
         bool differentials;
@@ -93,8 +94,8 @@ private:
     glm::vec3 shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight, const SampleContext& ctx,
                        RayCounts& counts, const PacketShadows* shadows, int lane, Recorder& rec,
                        const Differentials* d = nullptr) const;
-    inline glm::vec3 through_glass(const LightSample& ls, const glm::vec3& start) const;
-    glm::vec3 shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start) const;
+    inline glm::vec3 through_glass(const LightSample& ls, const glm::vec3& start, float time) const;
+    glm::vec3 shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start, float time) const;
     template <class Recorder>
     glm::vec3 trace(const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx, RayCounts& counts,
                     Recorder& rec, const RayDifferential* rd = nullptr) const;

@@ -213,15 +213,20 @@ void Parser::parse_trans(const Token& opener, SubgraphDesc& sg) {
     trans.loc = loc(opener);
     glm::mat4& m = trans.matrix;
     const float time = options_.time;
+    Motion motion;  // the same product kept as a function of time (kept only if the block moves)
     open_block();
     read_block(opener, "trans", [&](const Token& k) {
         const Keyword w = find_keyword(k.text);
         // M = T1 · T2 · … · Tn: each transform multiplies on the right, so the last one
         // written is applied to the object first (scene-format.md §3).
         if (w == Keyword::Translate) {
-            m = m * translation_matrix(vec3(k));
+            const glm::mat4 t = translation_matrix(vec3(k));
+            m = m * t;
+            motion.then_matrix(glm::dmat4(t));
         } else if (w == Keyword::Scale) {
-            m = m * scale_matrix(vec3(k));
+            const glm::mat4 s = scale_matrix(vec3(k));
+            m = m * s;
+            motion.then_matrix(glm::dmat4(s));
         } else if (w == Keyword::Rotate || w == Keyword::Angularrate) {
             // angularrate ax ay az rate: `rotate ax ay az (rate·t)` at scene time t (§9.4).
             const bool rotate = w == Keyword::Rotate;
@@ -235,11 +240,14 @@ void Parser::parse_trans(const Token& opener, SubgraphDesc& sg) {
                              " ax ay az " + (rotate ? "degrees" : "rate") + "' with a non-zero axis");
             else if (rotate || time != 0)  // at t = 0 exactly the file without it
                 m = m * *r;
+            if (r && rotate) motion.then_matrix(glm::dmat4(*r));
+            else if (r) motion.then_spin(glm::dvec3(axis), amount);
         } else if (w == Keyword::Velocity) {
             // velocity x y z: `translate t·x t·y t·z` at scene time t (§9.4).
             const glm::vec3 v = vec3(k);
             scene_.moves = true;
             if (time != 0) m = m * translation_matrix(time * v);
+            motion.then_velocity(glm::dvec3(v));
         } else if (w == Keyword::MatrixRC || w == Keyword::MatrixCR) {
             std::array<float, 16> v{};
             for (float& x : v) x = number(k);
@@ -251,6 +259,7 @@ void Parser::parse_trans(const Token& opener, SubgraphDesc& sg) {
                          "0 0 0 1, found " + bottom_row(given));
             else
                 m = m * given;
+            motion.then_matrix(glm::dmat4(given));
         } else if (w == Keyword::Object) {
             parse_object(k, trans);
         } else if (w == Keyword::Subgraph) {
@@ -268,6 +277,7 @@ void Parser::parse_trans(const Token& opener, SubgraphDesc& sg) {
         error(opener, "singular transform in the trans block opened at " + pos_str(opener) +
                           ": its matrix cannot be inverted (a zero scale, or a degenerate "
                           "or non-finite matrix)");
+    if (motion.moves()) trans.motion = std::move(motion);
     sg.children.push_back(std::move(trans));
 }
 

@@ -46,7 +46,8 @@ public:
 private:
     void add_sample(int x, int y, std::uint32_t index, Film& film, ChannelFilm& aov) {
         const SampleKey key{std::uint32_t(x), std::uint32_t(y), index};
-        const Ray ray = camera_sample_ray(camera_, sampler_, job_.width, job_.height, x, y, index);
+        const Ray ray = camera_sample_ray(camera_, sampler_, job_.width, job_.height, x, y, index,
+                                          !integrator_.scene().motion.empty());
         sample_.clear();
         glm::vec3 c(0.0f);
         if (whitted_) {

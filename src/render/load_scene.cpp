@@ -87,7 +87,9 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     result.stats.objects = flat.scene.instances.size();
     result.stats.lights = flat.scene.lights.size();
     result.stats.textures = flat.scene.textures.size();
-    auto scene = std::make_shared<const Scene>(accelerate(std::move(flat.scene), options.threads, options.cancel));
+    const Shutter shutter{double(options.time) + options.shutter_open, double(options.time) + options.shutter_close};
+    auto scene = std::make_shared<const Scene>(
+        accelerate(std::move(flat.scene), options.threads, options.cancel, options.shutter ? &shutter : nullptr));
     result.stats.build_seconds = since(t);
     if (!cancelled()) result.scene = std::move(scene);
     return result;

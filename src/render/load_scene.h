@@ -21,6 +21,10 @@ std::size_t default_max_memory();
 struct LoadOptions {
     bool lenient = false;
     float time = 0;   // scene time t for `velocity` / `angularrate` (scene-format.md §9.4)
+    // Motion blur: the shutter is open over [time + shutter_open, time + shutter_close], and the
+    // moving objects are kept apart, met at each ray's time (accel/motion_set.h).
+    bool shutter = false;
+    float shutter_open = 0, shutter_close = 0;
     int threads = 0;  // for building the BVH; 0 = all hardware threads
     TextureOptions textures;
     std::size_t max_file_bytes = ParseOptions{}.max_file_bytes;  // the scene file's size limit

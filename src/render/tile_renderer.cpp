@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "accel/scene.h"
+
 namespace whitted {
 namespace {
 
@@ -12,7 +14,8 @@ glm::vec3 clamped(const glm::vec3& c) { return {clamp01(c.x), clamp01(c.y), clam
 
 TileRenderer::TileRenderer(const Integrator& integrator, const RenderJob& job)
     : integrator_(integrator), job_(job), camera_(integrator.camera()),
-      sampler_(job.sampling.aa, job.sampling.spp, job.sampling.seed), clamp_(integrator.clamps_samples()) {
+      sampler_(job.sampling.aa, job.sampling.spp, job.sampling.seed), clamp_(integrator.clamps_samples()),
+      timed_(!integrator.scene().motion.empty()) {
     const int n = sampler_.samples_per_pixel();
     s0_ = std::clamp(job.sampling.adaptive() ? 0 : job.sample_begin, 0, n);
     s1_ = job.sampling.adaptive() || job.sample_end < 0 ? n : std::clamp(job.sample_end, s0_, n);
@@ -36,18 +39,24 @@ glm::vec3 TileRenderer::displayed(const glm::vec3& c) {
 }
 
 Ray camera_sample_ray(const Camera& camera, const Sampler& sampler, int width, int height, int x, int y,
-                      std::uint32_t index) {
-    if (sampler.centred())  // the pixel's centre through the lens centre: no sampler arithmetic per ray
-        return camera.pinhole_ray(width, height, float(x) + 0.5f, float(y) + 0.5f);
+                      std::uint32_t index, bool timed) {
+    if (sampler.centred()) {  // the pixel's centre through the lens centre, mid-shutter: no sampler arithmetic
+        Ray ray = camera.pinhole_ray(width, height, float(x) + 0.5f, float(y) + 0.5f);
+        if (timed) ray.time = 0.5f;
+        return ray;
+    }
     const SampleKey key{std::uint32_t(x), std::uint32_t(y), index};
     const glm::vec2 at = sampler.pixel_offset(key);
-    return camera.generate_ray(width, height, float(x) + at.x, float(y) + at.y, sampler.get2d(key, dimension::kLens));
+    Ray ray =
+        camera.generate_ray(width, height, float(x) + at.x, float(y) + at.y, sampler.get2d(key, dimension::kLens));
+    if (timed) ray.time = sampler.get2d(key, dimension::kTime).x;
+    return ray;
 }
 
 inline Ray TileRenderer::camera_ray(const Sampler& sampler, int x, int y, std::uint32_t index) const {
-    if (sampler.centred())  // camera_sample_ray's first case, inline: the ray of every one-sample render
+    if (sampler.centred() && !timed_)  // camera_sample_ray's first case, inline: the ray of every one-sample render
         return camera_.pinhole_ray(job_.width, job_.height, float(x) + 0.5f, float(y) + 0.5f);
-    return camera_sample_ray(camera_, sampler, job_.width, job_.height, x, y, index);
+    return camera_sample_ray(camera_, sampler, job_.width, job_.height, x, y, index, timed_);
 }
 
 bool TileRenderer::active(int x, int y) const {

@@ -21,9 +21,10 @@ constexpr int kPacketWidth = 4;
 constexpr int kPacketHeight = kPacketSize / kPacketWidth;
 
 // The camera ray of sample `index` of pixel (x, y) of a width × height image, drawn from
-// `sampler`: what every renderer traces (and the pixel inspector traces again).
+// `sampler`: what every renderer traces (and the pixel inspector traces again). `timed`: the
+// scene moves during the shutter (Scene::motion), so the ray takes the sample's time too.
 Ray camera_sample_ray(const Camera& camera, const Sampler& sampler, int width, int height, int x, int y,
-                      std::uint32_t index);
+                      std::uint32_t index, bool timed = false);
 
 class TileRenderer {
 public:
@@ -62,6 +63,7 @@ private:
     Sampler sampler_;
     Sampler centre_sampler_;  // one sample per pixel: every centre (adaptive's first look)
     bool clamp_;
+    bool timed_;  // the scene moves during the shutter: camera rays take a time each
     int s0_, s1_;
     int band_y0_ = 0, band_w_;
     std::vector<glm::vec3> band_;     // band_w_ × kPacketHeight colours of one sample

@@ -30,6 +30,7 @@ struct SampleKey {
 namespace dimension {
 constexpr std::uint32_t kFilm = 0;  // the point in the pixel (read through Sampler::pixel_offset)
 constexpr std::uint32_t kLens = 1;  // the point on the lens
+constexpr std::uint32_t kTime = 2;  // where in the shutter interval (motion blur): its first coordinate
 // At recursion depth `depth`: the point on light `light` (disc or cone), and the glossy direction
 // of the reflected and of the refracted ray.
 inline std::uint32_t light(int depth, std::uint32_t light) { return 16u + std::uint32_t(depth) * 0x10000u + 2u + light; }

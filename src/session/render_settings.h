@@ -5,6 +5,8 @@
 // command line, tool bar and Render menu; one validation turns the user's choices into a load and
 // a render.
 #include <cstddef>
+#include <optional>
+#include <utility>
 #include <set>
 #include <string>
 #include <string_view>
@@ -33,6 +35,7 @@ struct RenderSettings {
     float time = 0.0f;
     std::string frames;  // "A..B": numbered images NAME.000A.EXT … (session/frame_sequence.h); "" = one image
     float fps = 24.0f;   // frame n is at scene time n / fps
+    std::string shutter;  // "T0,T1": motion blur over [time + T0, time + T1]; "" = the instant (accel/motion_set.h)
     int threads = 0;
     bool lenient = false;
     std::string missing_textures = "error";
@@ -104,6 +107,9 @@ std::string setting_text(const RenderSettings& s, const Setting& setting);
 // "name=value" of every setting that changes the pixels, in table order: with the input files'
 // bytes, what a checkpoint of the render is valid for.
 std::string pixel_key(const RenderSettings& s);
+
+// --shutter's "T0,T1" (two finite numbers, T0 <= T1), or nothing if it is not that.
+std::optional<std::pair<float, float>> parse_shutter(const std::string& text);
 
 // The render and the load the settings describe (the job without callbacks or cancel flag).
 RenderJob make_render_job(const RenderSettings& s);

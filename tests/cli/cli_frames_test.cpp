@@ -66,6 +66,28 @@ TEST(CliFrames, EachFrameIsTheSceneAtItsTime) {
     EXPECT_NE(pixels_of(dir + "/f.0002.png"), pixels_of(dir + "/f.0000.png"));
 }
 
+// With --frames, --shutter T0,T1 is relative to each frame's time: frame n is the image of
+// --time n/fps with the same shutter, and a moving object's frames are blurred.
+TEST(CliFrames, ShutterIsRelativeToEachFramesTime) {
+    const std::string dir = test::make_temp_dir();
+    const std::string scene = write_file(dir, "m.sc", scene_with("velocity 2 0 0"));
+    const std::vector<std::string> blur = {"--shutter", "-0.1,0.1", "--spp", "16"};
+    auto with = [&](std::vector<std::string> extra) {
+        extra.insert(extra.end(), blur.begin(), blur.end());
+        return extra;
+    };
+    ASSERT_EQ(run_process(command(scene, dir + "/f.png", with({"--frames", "1..2", "--fps", "4"}))).exit_code, 0);
+    for (int n : {1, 2}) {
+        SCOPED_TRACE(n);
+        const std::string single = dir + "/t" + std::to_string(n) + ".png";
+        ASSERT_EQ(run_process(command(scene, single, with({"--time", n == 1 ? "0.25" : "0.5"}))).exit_code, 0);
+        EXPECT_EQ(pixels_of(dir + "/f.000" + std::to_string(n) + ".png"), pixels_of(single));
+    }
+    // Not the frame at its instant: the shutter blurs it.
+    ASSERT_EQ(run_process(command(scene, dir + "/still.png", {"--time", "0.5", "--spp", "16"})).exit_code, 0);
+    EXPECT_NE(pixels_of(dir + "/f.0002.png"), pixels_of(dir + "/still.png"));
+}
+
 TEST(CliFrames, FramesThatExistAreSkipped) {
     const std::string dir = test::make_temp_dir();
     const std::string scene = write_file(dir, "m.sc", scene_with("velocity 1 0 0"));

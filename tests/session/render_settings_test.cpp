@@ -28,6 +28,7 @@ std::string other_value(const Setting& s) {
     if (name == "aov") return "depth";
     if (name == "frames") return "1..2";
     if (name == "fps") return "30";
+    if (name == "shutter") return "0,1";
     if (name == "aov-file") return "/tmp/whitted-settings-test-layers.png";
     if (!s.choices.empty()) return s.choices.back();  // the defaults come first
     if (std::holds_alternative<bool RenderSettings::*>(s.field)) return "";
@@ -67,6 +68,31 @@ TEST(RenderSettings, AaThresholdWithSamplesIsTheNoiseThreshold) {
 
 // Every setting that changes pixels is in the key a checkpoint is made for (a resume after a
 // change of any of them is refused); the thread count is not.
+// --shutter T0,T1: an interval of scene time relative to the image's (--time, or each frame's),
+// refused where its rays would not carry the sample's time yet.
+TEST(RenderSettings, ShutterIsAnIntervalRelativeToTheImagesTime) {
+    for (const char* bad : {"1", "1,", ",1", "a,b", "2,1", "0,inf", "0,1,2", "0;1"}) {
+        RenderSettings s;
+        s.shutter = bad;
+        EXPECT_NE(validate(s).find("--shutter " + std::string(bad) + " is not an interval"), std::string::npos) << bad;
+    }
+    RenderSettings s;
+    s.shutter = "-0.25,0.5";
+    s.time = 2;
+    EXPECT_EQ(validate(s), "");
+    const LoadOptions lo = make_load_options(s);
+    EXPECT_TRUE(lo.shutter);
+    EXPECT_EQ(lo.time, 2.0f);
+    EXPECT_EQ(lo.shutter_open, -0.25f);
+    EXPECT_EQ(lo.shutter_close, 0.5f);
+    EXPECT_FALSE(make_load_options(RenderSettings{}).shutter);  // the default: the instant
+    s.mode = "path";
+    EXPECT_NE(validate(s).find("--shutter is traced in whitted mode only so far"), std::string::npos);
+    s.mode = "whitted";
+    s.texture_filter = "ewa";
+    EXPECT_NE(validate(s).find("--shutter with --texture-filter ewa is not supported yet"), std::string::npos);
+}
+
 TEST(RenderSettings, EverySettingThatChangesPixelsChangesTheCheckpointKey) {
     const RenderSettings base;
     for (const Setting& setting : render_settings_table()) {
