@@ -25,9 +25,7 @@ constexpr const char* kViewerRendersUntilStopped =
 constexpr const char* kViewerShowsOneFrame =
     "whitted-view shows one image (set its scene time with Ctrl+T); write a sequence with whitted --frames A..B";
 
-// Motion blur is traced by whitted so far; the viewer's and the MPI job's scenes are loaded their own way.
-constexpr const char* kShutterRefusal =
-    "whitted-mpi does not render motion blur yet; render it with whitted --shutter T0,T1";
+// Motion blur is for images written; the viewer shows the scene at one instant.
 constexpr const char* kViewerShowsOneInstant =
     "whitted-view shows the scene at one instant (Ctrl+T sets it); render motion blur with whitted --shutter T0,T1";
 
@@ -116,7 +114,7 @@ const std::vector<Setting>& render_settings_table() {
          "each frame's with --frames); each sample takes its own time in it and moving objects (velocity, "
          "angularrate) are met where they are then. Default: the instant itself. Whitted mode only; give --spp or "
          "--aa for samples (one sample per pixel is taken mid-shutter)",
-         &S::shutter, 0, 0, {}, true, kMpi | kViewer, kShutterRefusal, kViewerShowsOneInstant},
+         &S::shutter, 0, 0, {}, true, kViewer, "", kViewerShowsOneInstant},
         {"threads", "Threads", "Worker threads (0 = all hardware threads)", &S::threads, 0, 1024, {}, false},
         {"lenient", "Lenient", "Skip unknown keywords and object types with a warning instead of failing",
          &S::lenient, 0, 0, {}, true},

@@ -323,5 +323,13 @@ frames)
         cmp "$out/ref.$n.png" "$out/mpi.$n.png" || fail "frame $n differs from whitted's after the run again"
     done
     echo "ok" ;;
+shutter)
+    # Motion blur: every rank builds the moving instances' own BVH over the shutter and each sample's
+    # time comes from the sampler, so the tiles are whitted's whatever rank renders them.
+    reference "$src/tests/mpi/moving.sc" --shutter 0,0.5 --spp 8
+    "$WHITTED" "$src/tests/mpi/moving.sc" -o "$out/still.png" -q "${SIZE[@]}" --spp 8 || fail "whitted still"
+    cmp -s "$out/ref.png" "$out/still.png" && fail "the shutter blurred nothing"
+    same_as_reference 3 "$src/tests/mpi/moving.sc" --shutter 0,0.5 --spp 8 --tile-size 16 --threads 1 \
+        --test-schedule-seed 6 ;;
 *) fail "unknown case $case_name" ;;
 esac
