@@ -5,8 +5,9 @@
 
 namespace whitted {
 
-Surface surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
-    const Instance inst = scene.instance_at(hit.instance, ray.time);  // a moving one where the ray met it
+namespace {
+
+Surface surface_of(const Scene& scene, const Instance& inst, const Ray& ray, const Hit& hit) {
     const Ray object_ray = to_object_space(inst, ray);
     const glm::vec3 p = object_ray.at(hit.t);
     Surface s;
@@ -28,6 +29,18 @@ Surface surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
         mix_texel(s, sample_texture(scene.data.textures[s.material->texture], s.uv, s.material->repeat_u,
                                     s.material->repeat_v));
     return s;
+}
+
+// A moving instance where the ray met it (out of line: renders without a shutter never come here).
+[[gnu::noinline]] Surface moving_surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
+    return surface_of(scene, scene.instance_at(hit.instance, ray.time), ray, hit);
+}
+
+}  // namespace
+
+Surface surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
+    if (scene.motion.contains(hit.instance)) return moving_surface_at(scene, ray, hit);
+    return surface_of(scene, scene.data.instances[hit.instance], ray, hit);  // read in place
 }
 
 void mix_texel(Surface& s, const glm::vec3& texel) {
