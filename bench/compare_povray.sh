@@ -7,7 +7,7 @@
 #                           [-a N [-T THRESHOLD]] [SCENE.sc ...]
 #
 # Defaults: 5 runs, all hardware threads, 640×480, depth 5, build/ (needs build/apps/cli/whitted),
-# scenes bench/scenes/small.sc and bench/scenes/grid10k.sc. Every SCENE.sc needs a SCENE.pov next
+# scenes bench/scenes/small.sc, grid10k.sc and mirrors.sc. Every SCENE.sc needs a SCENE.pov next
 # to it. Depth: whitted's --max-depth D traces the camera ray plus D bounces; POV-Ray counts the
 # camera ray as level 1, so it gets max_trace_level D+1 (patched into a temporary copy). No
 # anti-aliasing in either unless -a N (N >= 2): whitted --aa N (N x N rays per pixel on a regular
@@ -35,7 +35,7 @@ if ((aa > 1)); then
   aa_desc="AA ${aa}x${aa} (whitted --aa $aa --aa-threshold $aa_threshold; POV-Ray ${p_aa[*]})"
 fi
 scenes=("$@")
-[ ${#scenes[@]} -gt 0 ] || scenes=("$here/scenes/small.sc" "$here/scenes/grid10k.sc")
+[ ${#scenes[@]} -gt 0 ] || scenes=("$here/scenes/small.sc" "$here/scenes/grid10k.sc" "$here/scenes/mirrors.sc")
 whitted="$build/apps/cli/whitted"
 [ -x "$whitted" ] || { echo "compare_povray: no $whitted (build it, or pass -b BUILD_DIR)" >&2; exit 1; }
 # POV-Ray 3.7 (Debian's povray) and bc (the arithmetic below), installed when missing.
