@@ -4,9 +4,20 @@
 #include <cmath>
 
 #include "accel/instance_geometry.h"
-#include "sampler/warp.h"  // kPi
+#include "sampler/spherical_rectangle.h"
 
 namespace whitted {
+
+namespace {
+
+// The solid angle of the triangle (a, b, c) seen from the origin (Van Oosterom and Strackee 1983),
+// given the absolute value of its triple product.
+double triangle_solid_angle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double triple) {
+    const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
+    return 2.0 * std::atan2(triple, la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la);
+}
+
+}  // namespace
 
 CubeLight::CubeLight(const Instance& inst) {
     const glm::mat4 m = object_to_world(inst);
@@ -24,6 +35,9 @@ CubeLight::CubeLight(const Instance& inst) {
         corner_[k] = centre_[k] - 0.5f * (edge_a_[k] + edge_b_[k]);
         normal_[k] = normal_to_world(inst, n);
         area_[k] = glm::length(glm::cross(edge_a_[k], edge_b_[k]));
+        // Perpendicular up to the rounding of the matrix (a rotation's entries are rounded to float).
+        const float la = glm::length(edge_a_[k]), lb = glm::length(edge_b_[k]);
+        rectangle_[k] = std::abs(glm::dot(edge_a_[k], edge_b_[k])) <= 1e-5f * la * lb && area_[k] > 0.0f;
     }
 }
 
@@ -33,56 +47,70 @@ int CubeLight::face_of(const glm::vec3& n) {
     return 2 * axis + (n[axis] < 0.0f ? 1 : 0);
 }
 
-void CubeLight::face_probabilities(const glm::vec3& x, float (&p)[6]) const {
-    // In front of a face: x on its outer side. Each such face is weighed by half its share of an
-    // estimate of the solid angle (area · cos / distance² from its centre, which underestimates
-    // faces seen from close by at a grazing angle) and half its share of the area, so that no face
-    // x can see gets less than half of what choosing by area would give it.
-    float omega[6], area[6], omega_sum = 0.0f, area_sum = 0.0f;
+void CubeLight::face_probabilities(const glm::vec3& x, double (&p)[6], double (&omega)[6]) const {
+    // In front of a face: x on its outer side. Its solid angle: the parallelogram as two triangles,
+    // whose triple products are both (corner − x) · (edge_a × edge_b) = distance · area, free of
+    // the cancellation of the triple product of three long vectors seen from far off.
+    double omega_sum = 0.0, area_sum = 0.0;
+    bool seen[6];
     for (int k = 0; k < 6; ++k) {
-        const glm::vec3 v = x - centre_[k];
-        const float h = glm::dot(normal_[k], v);
-        if (h > 0.0f) {
-            const float d2 = glm::dot(v, v);
-            omega[k] = std::min(2.0f * kPi, area_[k] * h / (d2 * std::sqrt(d2)));
-            area[k] = area_[k];
-        } else {
-            omega[k] = area[k] = 0.0f;
-        }
+        omega[k] = 0.0;
+        const double h = glm::dot(glm::dvec3(normal_[k]), glm::dvec3(x) - glm::dvec3(centre_[k]));
+        seen[k] = h > 0.0;
+        if (!seen[k]) continue;
+        const glm::dvec3 a = glm::dvec3(corner_[k]) - glm::dvec3(x), ea(edge_a_[k]), eb(edge_b_[k]);
+        const glm::dvec3 b = a + ea, c = b + eb, d = a + eb;
+        const double triple = h * double(area_[k]);
+        omega[k] = triangle_solid_angle(a, b, c, triple) + triangle_solid_angle(a, c, d, triple);
         omega_sum += omega[k];
-        area_sum += area[k];
+        area_sum += area_[k];
     }
-    if (!(area_sum > 0.0f)) {  // inside (or on) the cube: every face's inner side, by area
-        const float total = world_area();
+    if (!(area_sum > 0.0)) {  // inside (or on) the cube: every face's inner side, by area
+        const double total = world_area();
         for (int k = 0; k < 6; ++k) p[k] = area_[k] / total;
         return;
     }
+    // Solid angles too small for a double (faces out of sight by 1e150): the faces by area.
     for (int k = 0; k < 6; ++k)
-        p[k] = 0.5f * (omega_sum > 0.0f ? omega[k] / omega_sum : area[k] / area_sum) + 0.5f * area[k] / area_sum;
+        p[k] = omega_sum > 0.0 ? omega[k] / omega_sum : seen[k] ? area_[k] / area_sum : 0.0;
+}
+
+float CubeLight::density(const glm::vec3& x, const glm::vec3& p, int k, const double (&prob)[6],
+                         const double (&omega)[6]) const {
+    if (!(prob[k] > 0.0)) return 0.0f;
+    if (!by_solid_angle(k, omega[k])) return float(prob[k] / area_[k]);
+    // 1 / omega per unit solid angle (the two triangles' solid angle is the spherical rectangle's
+    // to double's rounding, and cheaper); a unit of area at p is cos_light / d² of it.
+    const glm::dvec3 to = glm::dvec3(p) - glm::dvec3(x);
+    const double d2 = glm::dot(to, to);
+    const double cos_light = std::abs(glm::dot(glm::dvec3(normal_[k]), to)) / std::sqrt(d2);
+    return float(prob[k] / omega[k] * cos_light / d2);
 }
 
 CubeLight::Sample CubeLight::sample(const glm::vec3& x, glm::vec2 u) const {
-    float p[6];
-    face_probabilities(x, p);
+    double p[6], omega[6];
+    face_probabilities(x, p, omega);
     // u.x picks the face and is stretched back to [0, 1) within its share (stratification kept);
     // past the rounding of the sum, the last face that can be chosen.
     int k = 0;
-    float below = 0.0f, start = 0.0f;
+    double below = 0.0, start = 0.0;
     for (int j = 0; j < 6; ++j) {
-        if (!(p[j] > 0.0f)) continue;
+        if (!(p[j] > 0.0)) continue;
         k = j;
         start = below;
-        if (u.x < below + p[j]) break;
+        if (double(u.x) < below + p[j]) break;
         below += p[j];
     }
-    const float a = std::clamp((u.x - start) / p[k], 0.0f, 0x1.fffffep-1f);
-    return {corner_[k] + a * edge_a_[k] + u.y * edge_b_[k], normal_[k], p[k] / area_[k]};
+    glm::vec2 st(std::clamp(float((double(u.x) - start) / p[k]), 0.0f, 0x1.fffffep-1f), u.y);
+    if (by_solid_angle(k, omega[k])) st = SphericalRectangle(x, corner_[k], edge_a_[k], edge_b_[k]).sample(st);
+    const glm::vec3 point = corner_[k] + st.x * edge_a_[k] + st.y * edge_b_[k];
+    return {point, normal_[k], density(x, point, k, p, omega)};
 }
 
-float CubeLight::pdf_area(const glm::vec3& x, int face) const {
-    float p[6];
-    face_probabilities(x, p);
-    return p[face] / area_[face];
+float CubeLight::pdf_area(const glm::vec3& x, const glm::vec3& point, int face) const {
+    double p[6], omega[6];
+    face_probabilities(x, p, omega);
+    return density(x, point, face, p, omega);
 }
 
 }  // namespace whitted

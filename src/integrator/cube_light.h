@@ -2,10 +2,14 @@
 // An emissive cube seen from a shading point (path tracing, scene-format.md §9.2). Emission is
 // two-sided, but the cube is convex and closed: from outside, a face's points can be seen only if
 // the point is in front of that face's plane (at most three faces); the others are hidden behind
-// them. So only those faces are sampled, each chosen with a probability that estimates its share
-// of the solid angle, and uniform by world area on it; from inside, all six by world area. The
-// density depends on the shading point: next-event estimation and a BSDF ray that hits the cube
-// ask for it at the same point, so multiple importance sampling stays consistent.
+// them. So only those faces are sampled, each chosen with probability its share of their solid
+// angle (exact, Van Oosterom and Strackee 1983), and on it uniform in the solid angle it subtends
+// (sampler/spherical_rectangle.h) when it is a rectangle in the world (a matrix that shears the
+// cube makes parallelograms of its faces) and its solid angle is neither tiny nor close to a
+// hemisphere (kMinSolidAngle, kMaxSolidAngle); else uniform by world area on it. From inside, all
+// six by world area. The density depends on the shading point and, per unit area, on the point
+// of the face: next-event estimation and a BSDF ray that hits the cube ask for it with both, so
+// multiple importance sampling weighs with the density the point was drawn with.
 #include <glm/glm.hpp>
 
 #include "data/scene_data.h"
@@ -23,19 +27,38 @@ public:
     };
     // A point of the cube for the shading point x, from u in [0, 1)² (u.x also picks the face).
     Sample sample(const glm::vec3& x, glm::vec2 u) const;
-    // The density sample() draws the point of face `face` with, per unit world area, from x.
-    float pdf_area(const glm::vec3& x, int face) const;
+    // The density sample() draws the point p of face `face` with, per unit world area, from x.
+    float pdf_area(const glm::vec3& x, const glm::vec3& p, int face) const;
     // The face (0..5: +x, −x, +y, −y, +z, −z) whose object-space outward normal is n.
     static int face_of(const glm::vec3& n_object);
     float world_area() const { return area_[0] + area_[1] + area_[2] + area_[3] + area_[4] + area_[5]; }
 
+    // Below this solid angle (pbrt-v4's bound) a face is sampled by area: a face that small as
+    // seen from x is far off or seen edge-on, its ratio of the two densities (cos_light /
+    // distance²) varies little over it or its light is slight, so the construction's trigonometry
+    // buys little; and its solid angle, four near-right angles less 2π, keeps fewer digits.
+    static constexpr double kMinSolidAngle = 3e-4;
+    // Above this one (2π less 0.06: x nearly in the face's plane, inside its outline) too: the
+    // construction degenerates as x's distance to the plane goes to 0 (the planes through x and
+    // the edges all tend to the face's, and it divides by that distance), and its directions
+    // graze the face, where a small error in a direction is a large one in the point.
+    static constexpr double kMaxSolidAngle = 6.22;
+
 private:
-    // The probability of choosing each face from x (0 for faces that cannot be seen from there).
-    void face_probabilities(const glm::vec3& x, float (&p)[6]) const;
+    // The probability of choosing each face from x (0 for faces that cannot be seen from there)
+    // and the solid angle of each face x is in front of (0 for the others, and from inside).
+    void face_probabilities(const glm::vec3& x, double (&p)[6], double (&omega)[6]) const;
+    // Whether face k, of solid angle omega from x, is sampled in solid angle (else by area).
+    bool by_solid_angle(int k, double omega) const {
+        return rectangle_[k] && omega >= kMinSolidAngle && omega <= kMaxSolidAngle;
+    }
+    float density(const glm::vec3& x, const glm::vec3& p, int k, const double (&prob)[6],
+                  const double (&omega)[6]) const;
 
     glm::vec3 corner_[6], edge_a_[6], edge_b_[6];  // face k = corner + [0,1]·edge_a + [0,1]·edge_b
     glm::vec3 centre_[6], normal_[6];
     float area_[6];
+    bool rectangle_[6];  // edge_a ⟂ edge_b in the world (a face the matrix does not shear)
 };
 
 }  // namespace whitted

@@ -49,6 +49,9 @@ PathLights::PathLights(const Scene& scene) : scene_(scene) {
     for (std::uint32_t i = 0; i < flat.instances.size(); ++i) {
         const glm::vec3& e = scene.material(i).emit;
         if (std::max(e.x, std::max(e.y, e.z)) <= 0.0f) continue;
+        // A moving emitter (a shutter's motion blur) is not sampled where the load placed it: the
+        // path tracer finds its light by the directions it samples, whole (no weighting).
+        if (scene.motion.contains(i)) continue;
         const Instance& inst = flat.instances[i];
         if (inst.kind == ShapeKind::Mesh) {
             MeshAreaSampler sampler(flat.meshes[inst.mesh], object_to_world(inst));
@@ -72,7 +75,7 @@ PathLights::PathLights(const Scene& scene) : scene_(scene) {
         lights_.push_back({std::int32_t(i), -1});
         power.push_back(std::max(1e-12f, luminance(e) * world_area(flat.instances[i]) * kPi));
     }
-    const Bounds b = scene.bvh.bounds();
+    const Bounds b = scene.bounds();
     const float radius = b.empty() ? 1.0f : 0.5f * glm::length(b.hi - b.lo);
     for (std::size_t l = 0; l < flat.lights.size(); ++l) {
         const Light& light = flat.lights[l];
@@ -119,14 +122,15 @@ AreaLightSample PathLights::sample_area(std::uint32_t instance, const glm::vec3&
     const ShapeSample s = sample_unit_shape(inst.kind, u);
     const glm::vec3 n_object = unit_shape_normal(inst.kind, s.part, s.p);
     const glm::mat4 m = object_to_world(inst);
-    return {glm::vec3(m * glm::vec4(s.p, 1.0f)), normal_to_world(inst, n_object), pdf_area(instance, x, n_object)};
+    const glm::vec3 p = glm::vec3(m * glm::vec4(s.p, 1.0f));
+    return {p, normal_to_world(inst, n_object), pdf_area(instance, x, p, n_object)};
 }
 
-float PathLights::pdf_area(std::uint32_t instance, const glm::vec3& x, const glm::vec3& n_object) const {
+float PathLights::pdf_area(std::uint32_t instance, const glm::vec3& x, const glm::vec3& p, const glm::vec3& n_object) const {
     if (const std::int32_t m = mesh_sampler_of_[instance]; m >= 0)
         return 1.0f / mesh_samplers_[std::size_t(m)].total_area();
     if (const std::int32_t c = cube_of_[instance]; c >= 0)
-        return cubes_[std::size_t(c)].pdf_area(x, CubeLight::face_of(n_object));
+        return cubes_[std::size_t(c)].pdf_area(x, p, CubeLight::face_of(n_object));
     const Instance& inst = scene_.data.instances[instance];
     if (const std::int32_t k = sphere_of_[instance]; k >= 0)
         return spheres_[std::size_t(k)].pdf_area(x, normal_to_world(inst, n_object));

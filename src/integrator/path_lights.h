@@ -5,7 +5,8 @@
 // |det M| · |M⁻ᵀ n| dA in the world); a cube only on the faces the shading point can see
 // (integrator/cube_light.h); a round sphere by the cone it subtends (integrator/sphere_light.h); point, spot and directional lights by next-event estimation only. An emissive mesh (§9.3) is sampled by world triangle area, with the density 1 / its world
 // area everywhere on it (mesh/mesh_area_sampler.h, one table per emissive mesh instance). One light
-// is chosen per estimate, in proportion to its power.
+// is chosen per estimate, in proportion to its power. An emitter that moves during the shutter is
+// not one of them: the path tracer meets it by its sampled directions alone.
 #include <cstdint>
 #include <vector>
 
@@ -40,14 +41,15 @@ public:
     float choice_probability(std::uint32_t instance) const;
 
     // A point of the instance's shape to light the shading point x with, and its world-area
-    // density: on a cube, on the faces x can see (CubeLight); on a round sphere, in the cone x
+    // density: on a cube, on the faces x can see, in the solid angle of each (CubeLight); on a round sphere, in the cone x
     // sees it in (SphereLight); on the other unit shapes, uniform by
     // object-space area (the ellipsoid's, uniform on the sphere it is mapped from); on a mesh,
     // uniform by world area (u_triangle picks the triangle, u the point in it).
     AreaLightSample sample_area(std::uint32_t instance, const glm::vec3& x, glm::vec2 u, float u_triangle = 0.0f) const;
-    // The world-area density of sample_area from x at a point of the instance whose object-space
-    // normal is n_object (the same density it samples with; only a cube's depends on x).
-    float pdf_area(std::uint32_t instance, const glm::vec3& x, const glm::vec3& n_object) const;
+    // The world-area density of sample_area from x at the point p (world space) of the instance,
+    // whose object-space normal there is n_object (the same density it samples with; only a cube's
+    // depends on x and p).
+    float pdf_area(std::uint32_t instance, const glm::vec3& x, const glm::vec3& p, const glm::vec3& n_object) const;
     // The instance's world surface area (by quadrature of the area element: exact for flat parts).
     static float world_area(const Instance& inst);
 

@@ -1,0 +1,33 @@
+#pragma once
+// Uniform sampling of the solid angle a rectangle subtends from a point (Ureña, Fajardo and King
+// 2013, "An Area-Preserving Parametrization for Spherical Rectangles"). The square [0, 1)² maps
+// onto the rectangle so that equal areas of the square become equal solid angles seen from the
+// point: a light sampled this way from a point close to it is not crowded with samples far off at
+// grazing angles, as sampling by area is. The map is continuous, so stratification is kept.
+// Computed in double: the solid angle is the sum of four angles minus 2π, which loses the digits
+// of a small one to cancellation.
+#include <glm/glm.hpp>
+
+namespace whitted {
+
+class SphericalRectangle {
+public:
+    // The rectangle corner + [0, 1]·ex + [0, 1]·ey (ex ⟂ ey, neither zero) seen from x, which is
+    // not in its plane.
+    SphericalRectangle(const glm::vec3& x, const glm::vec3& corner, const glm::vec3& ex, const glm::vec3& ey);
+
+    // The solid angle the rectangle subtends from x (steradians, in (0, 2π)).
+    double solid_angle() const { return solid_angle_; }
+    // The rectangle's coordinates (s, t) in [0, 1]² (point = corner + s·ex + t·ey) of the point
+    // seen in the direction u maps to; density 1 / solid_angle() per unit solid angle from x.
+    glm::vec2 sample(glm::vec2 u) const;
+
+private:
+    // The rectangle in a frame at x: x along ex, y along ey, z away from the rectangle, which lies
+    // at z = z0 < 0 over [x0, x1] × [y0, y1].
+    double x0_, x1_, y0_, y1_, z0_;
+    double b0_, b1_, k_;  // the z of the normals of the planes through x and the edges y = y0, y = y1
+    double solid_angle_;
+};
+
+}  // namespace whitted
