@@ -30,7 +30,8 @@ struct MotionSet {
 
     bool empty() const { return chain.empty(); }
     std::uint32_t count() const { return std::uint32_t(chain.size()); }
-    bool contains(std::uint32_t instance) const { return instance >= first && instance - first < count(); }
+    // One compare (below `first` the difference wraps around to more than any count).
+    bool contains(std::uint32_t instance) const { return instance - first < count(); }
     // `placed` (the moving instance at the load's time) moved to where it is at shutter fraction `time`.
     Instance at(std::uint32_t k, const Instance& placed, float time) const;
 };

@@ -78,6 +78,14 @@ struct Scene {
         return motion.contains(i) ? motion.at(i - motion.first, data.instances[i], time) : data.instances[i];
     }
 
+    // Everything a ray can meet: the static BVH's box and, with a shutter, the moving instances'
+    // boxes swept over it.
+    Bounds bounds() const {
+        Bounds b = bvh.bounds();
+        if (!motion.empty()) b.grow(motion.tree.bounds());
+        return b;
+    }
+
     const Material& material(std::uint32_t instance) const { return data.materials[data.instances[instance].material]; }
     const Material& material(const Hit& hit) const { return material(hit.instance); }
 

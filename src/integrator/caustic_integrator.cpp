@@ -61,7 +61,7 @@ CausticIntegrator::CausticIntegrator(const Scene& scene, const Camera& camera, c
       emitter_(scene, settings.aim) {
     // The emitters' light that meets an ideal mirror or glass first is the photons' from here on.
     path_.leave_emitter_caustics_to_photons(true);
-    const Bounds b = scene.bvh.bounds();
+    const Bounds b = scene.bounds();
     const float diagonal = b.empty() ? 1.0f : glm::length(b.extent());
     r0_ = settings.radius > 0.0f ? settings.radius : std::max(1e-6f, diagonal / 500.0f);
 }
@@ -86,6 +86,9 @@ bool CausticIntegrator::trace_photon(std::uint64_t key, std::uint64_t index, std
     u.side = rng.next();
     EmittedPhoton e = emitter_.emit(u);
     Ray ray = e.ray;
+    // Over a shutter each photon has its own time (drawn last: a scene that does not move keeps
+    // every photon it had), met by the moving objects as a camera sample's rays meet them.
+    if (!scene_.motion.empty()) ray.time = rng.next();
     glm::vec3 beta = e.power;
     const float beta0 = max_component(beta);
     if (!(beta0 > 0.0f)) return false;
@@ -126,7 +129,7 @@ bool CausticIntegrator::trace_photon(std::uint64_t key, std::uint64_t index, std
             if (rng.next() >= q) return reached;
             beta /= q;
         }
-        ray = Ray{spawn(s.point, s.normal, bs.wi), bs.wi};
+        ray = Ray{spawn(s.point, s.normal, bs.wi), bs.wi, ray.time};
     }
     return reached;
 }
@@ -238,7 +241,7 @@ glm::vec3 CausticIntegrator::caustic(const Ray& camera_ray, const SampleKey& key
         const BsdfSample bs = bsdf.sample(u.x, u);  // a delta lobe: the direction needs no numbers
         if (!bs.valid || !bs.delta || max_component(bs.weight) <= 0.0f) return glm::vec3(0.0f);
         beta *= bs.weight;
-        ray = Ray{spawn(s.point, s.normal, bs.wi), bs.wi};
+        ray = Ray{spawn(s.point, s.normal, bs.wi), bs.wi, ray.time};
         ++(glm::dot(bs.wi, s.normal) * glm::dot(wo, s.normal) >= 0.0f ? counts.reflected : counts.refracted);
     }
     return glm::vec3(0.0f);

@@ -26,9 +26,9 @@ glm::vec3 NormalsIntegrator::hit_color(const Ray& ray, const Hit& hit) const {
 }
 
 DepthIntegrator::DepthIntegrator(const Scene& scene, const Camera& camera) : HitViewIntegrator(scene, camera) {
-    if (scene.bvh.empty()) return;
+    if (scene.bvh.empty() && scene.motion.empty()) return;
     // Shade the scene's own distance range from the eye: near = white, far = black.
-    const Bounds b = scene.bvh.bounds();
+    const Bounds b = scene.bounds();
     const glm::vec3 eye = camera.eye;
     near_ = glm::length(glm::clamp(eye, b.lo, b.hi) - eye);
     float far = 0;

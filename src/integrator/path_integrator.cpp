@@ -34,6 +34,7 @@ struct PathIntegrator::Vertex {
     Surface s;
     Bsdf bsdf;
     glm::vec3 wo;
+    float time;  // the camera sample's shutter time, for the rays this vertex spawns
 };
 
 PathIntegrator::PathIntegrator(const Scene& scene, const Camera& camera, int max_bounces)
@@ -78,7 +79,7 @@ glm::vec3 PathIntegrator::next_event(const Vertex& v, int bounce, const SampleKe
         const float pdf_light = prob * ls.pdf_area * d2 / cos_light;  // per unit solid angle at x
         const glm::vec3 start = spawn(x, v.s.normal, to);
         ++counts.shadow;
-        if (scene_.occluded(Ray{start, ls.point - start}, 1.0f - 1e-4f)) return glm::vec3(0.0f);
+        if (scene_.occluded(Ray{start, ls.point - start, v.time}, 1.0f - 1e-4f)) return glm::vec3(0.0f);
         const float w = power_heuristic(pdf_light, v.bsdf.pdf(to));
         return scene_.material(std::uint32_t(pick.instance)).emit * f * (cos_x * w / pdf_light);
     }
@@ -93,8 +94,9 @@ glm::vec3 PathIntegrator::next_event(const Vertex& v, int bounce, const SampleKe
     if (max_component(f) <= 0.0f) return glm::vec3(0.0f);
     const glm::vec3 start = spawn(x, v.s.normal, ls.to_light);
     ++counts.shadow;
-    const bool blocked = std::isinf(ls.distance) ? scene_.occluded(Ray{start, ls.to_light}, Scene::kInfinity)
-                                                 : scene_.occluded(Ray{start, ls.position - start}, 1.0f - 1e-4f);
+    const bool blocked = std::isinf(ls.distance)
+                             ? scene_.occluded(Ray{start, ls.to_light, v.time}, Scene::kInfinity)
+                             : scene_.occluded(Ray{start, ls.position - start, v.time}, 1.0f - 1e-4f);
     if (blocked) return glm::vec3(0.0f);
     return kPi * f * ls.intensity * (cos_x / prob);
 }
@@ -120,8 +122,14 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
         const Material& m = *s.material;
         const glm::vec3 wo = -glm::normalize(ray.direction);
         if (max_component(m.emit) > 0.0f) {
+            // A moving emitter is found by the sampled directions alone (PathLights, PhotonEmitter):
+            // all of its light, caustics included, is counted here, whole.
+            const float choice = lights_.choice_probability(hit.instance);
             if (delta_before) {
-                if (!(scattered && emitter_caustics_to_photons_)) radiance += beta * m.emit;
+                if (!(scattered && emitter_caustics_to_photons_ && !scene_.motion.contains(hit.instance)))
+                    radiance += beta * m.emit;
+            } else if (!(choice > 0.0f)) {
+                radiance += beta * m.emit;
             } else {
                 // The same light could have been found by next-event estimation: weigh the two.
                 const glm::vec3 to = s.point - from;
@@ -130,8 +138,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
                 // (a mesh's shading normal, interpolated, is not that surface's).
                 const glm::vec3 n_light = normal_to_world(scene_.data.instances[hit.instance], s.object_normal);
                 const float cos_light = std::abs(glm::dot(n_light, wo));
-                const float pdf_light = lights_.choice_probability(hit.instance) *
-                                        lights_.pdf_area(hit.instance, from, s.object_normal) * d2 / std::max(cos_light, 1e-12f);
+                const float pdf_light = choice * lights_.pdf_area(hit.instance, from, s.point, s.object_normal) * d2 / std::max(cos_light, 1e-12f);
                 radiance += beta * m.emit * power_heuristic(bsdf_pdf, pdf_light);
             }
         }
@@ -141,7 +148,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
         }
         if (bounce >= max_bounces_) break;
 
-        const Vertex v{s, Bsdf(m, s.diffuse, s.normal, wo), wo};
+        const Vertex v{s, Bsdf(m, s.diffuse, s.normal, wo), wo, ray.time};
         if (v.bsdf.black()) break;
         radiance += beta * next_event(v, bounce, key, sampler, counts);
 
@@ -153,7 +160,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
         scattered = scattered || !bs.delta;
         bsdf_pdf = bs.pdf;
         from = s.point;
-        ray = Ray{spawn(s.point, s.normal, bs.wi), bs.wi};
+        ray = Ray{spawn(s.point, s.normal, bs.wi), bs.wi, ray.time};
         ++(glm::dot(bs.wi, s.normal) * glm::dot(wo, s.normal) >= 0.0f ? counts.reflected : counts.refracted);
 
         // Russian roulette after the third bounce: a path whose weight has fallen goes on with

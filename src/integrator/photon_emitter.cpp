@@ -54,7 +54,7 @@ float light_flux_scale(const Light& light, float radius) {
 
 PhotonEmitter::PhotonEmitter(const Scene& scene, bool aim) : scene_(scene), aim_(aim) {
     const SceneData& data = scene.data;
-    const Bounds bounds = scene.bvh.bounds();
+    const Bounds bounds = scene.bounds();
     if (!bounds.empty()) {
         centre_ = bounds.centre();
         radius_ = std::max(1e-6f, 0.5f * glm::length(bounds.extent()));
@@ -64,7 +64,10 @@ PhotonEmitter::PhotonEmitter(const Scene& scene, bool aim) : scene_(scene), aim_
     for (std::uint32_t i = 0; i < data.instances.size(); ++i) {
         if (!has_delta_lobe(scene.material(i))) continue;
         const Instance& inst = data.instances[i];
-        const Bounds b = inst.kind == ShapeKind::Mesh ? mesh_world_bounds(data.meshes[inst.mesh], inst) : world_bounds(inst);
+        // A moving one (a shutter's motion blur) over the whole interval: photons have times of their own.
+        const Bounds b = scene.motion.contains(i) ? scene.motion.swept[i - scene.motion.first]
+                         : inst.kind == ShapeKind::Mesh ? mesh_world_bounds(data.meshes[inst.mesh], inst)
+                                                        : world_bounds(inst);
         if (b.empty()) continue;
         all.grow(b);
         targets_.push_back(sphere_of(b));
@@ -97,6 +100,7 @@ PhotonEmitter::PhotonEmitter(const Scene& scene, bool aim) : scene_(scene), aim_
     for (std::uint32_t i = 0; i < data.instances.size(); ++i) {
         const glm::vec3& e = scene.material(i).emit;
         if (!(max_component(e) > 0.0f)) continue;
+        if (scene.motion.contains(i)) continue;  // the path tracer takes all of a moving emitter's light
         const Instance& inst = data.instances[i];
         Source src;
         src.instance = std::int32_t(i);

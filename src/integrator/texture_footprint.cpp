@@ -21,8 +21,8 @@ bool meet_plane(const Ray& r, const glm::vec3& point, const glm::vec3& ng, glm::
 // The texture coordinates and world shading normal the hit's surface, continued, has at world
 // point q of its tangent plane: the shape's own formulas at q (a triangle's barycentrics extended
 // past its edges).
-void continued_surface(const Scene& scene, const Hit& hit, const glm::vec3& q, glm::vec2& uv, glm::vec3& n) {
-    const Instance& inst = scene.data.instances[hit.instance];
+void continued_surface(const Scene& scene, const Instance& inst, const Hit& hit, const glm::vec3& q, glm::vec2& uv,
+                       glm::vec3& n) {
     const glm::vec3 po = to_object_space(inst, Ray{q, glm::vec3(0.0f)}).origin;
     if (inst.kind == ShapeKind::Mesh) {
         const TriangleMesh& mesh = scene.data.meshes[inst.mesh];
@@ -60,8 +60,8 @@ bool refract(const glm::vec3& d, const glm::vec3& n, float eta, glm::vec3& out) 
 }  // namespace
 
 bool surface_differentials(const Scene& scene, const Hit& hit, const Surface& s, const RayDifferential& rd,
-                           SurfaceDifferentials& out) {
-    const Instance& inst = scene.data.instances[hit.instance];
+                           SurfaceDifferentials& out, float time) {
+    const Instance inst = scene.instance_at(hit.instance, time);  // where a moving one is at that time
     // The tangent plane of the true surface (a triangle's own plane, not its shading normal's).
     const glm::vec3 ng = normal_to_world(inst, s.object_normal);
     glm::vec3 px, py;
@@ -70,8 +70,8 @@ bool surface_differentials(const Scene& scene, const Hit& hit, const Surface& s,
     out.dpdy = py - s.point;
     glm::vec2 uvx, uvy;
     glm::vec3 nx, ny;
-    continued_surface(scene, hit, px, uvx, nx);
-    continued_surface(scene, hit, py, uvy, ny);
+    continued_surface(scene, inst, hit, px, uvx, nx);
+    continued_surface(scene, inst, hit, py, uvy, ny);
     out.uv.dx = uvx - s.uv;
     out.uv.dy = uvy - s.uv;
     if (u_goes_around(inst, hit)) {  // the short way round the seam

@@ -21,8 +21,10 @@ struct SurfaceDifferentials {
 };
 
 // False when an auxiliary ray runs parallel to the tangent plane (or anything is not finite).
+// `time`: the ray's shutter time (Ray::time), where a moving instance is met; the auxiliary rays
+// are taken at the same instant.
 bool surface_differentials(const Scene& scene, const Hit& hit, const Surface& s, const RayDifferential& rd,
-                           SurfaceDifferentials& out);
+                           SurfaceDifferentials& out, float time = 0.0f);
 
 // The surface's texture read again with `filter` (over `footprint` for trilinear and ewa; null:
 // none, the image's finest level), mixed into diffuse and ambient as surface_at mixes the bilinear

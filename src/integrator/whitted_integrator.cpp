@@ -161,22 +161,31 @@ void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sample
     }
 }
 
+// Inlined where a reflected or refracted ray is traced, as it was before rays carried a time.
 template <class Recorder>
-glm::vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx,
+[[gnu::always_inline]] inline glm::vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx,
                                    RayCounts& counts, Recorder& rec, const RayDifferential* rd) const {
     Hit hit;
     if (!scene_.intersect(ray, hit)) {
         rec.miss(scene_.data.background);
         return scene_.data.background;
     }
+    // The inspector's report gives every hit its texture coordinates, textured or not.
+    auto record_hit = [&](const ShadingPoint& p) {
+        if constexpr (Recorder::kRecords) {
+            Surface s = p.s;
+            if (s.material->texture < 0) s.uv = surface_uv(scene_, ray, hit);
+            rec.hit(ray, hit, s, p.n, p.outside, depth);
+        }
+    };
     if (rd) {  // (apart, so that the common path keeps no differentials on its stack)
         Differentials d{*rd, {}};
         const ShadingPoint p = shading_point(ray, hit, &d);
-        rec.hit(ray, hit, p.s, p.n, p.outside, depth);
+        record_hit(p);
         return shade_at(p, depth, weight, ctx, counts, nullptr, 0, rec, p.differentials ? &d : nullptr);
     }
     const ShadingPoint p = shading_point(ray, hit);
-    rec.hit(ray, hit, p.s, p.n, p.outside, depth);
+    record_hit(p);
     return shade_at(p, depth, weight, ctx, counts, nullptr, 0, rec);
 }
 
@@ -184,11 +193,11 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::shading_point(const Ray& ray,
                                                                  Differentials* d) const {
     ShadingPoint p;
     p.s = surface_at(scene_, ray, hit);
+    p.time = ray.time;
     if (filter_ != TextureFilter::Bilinear) filter_texture(p, hit, d);
     if (variant_ && conventions_.normals_by_m)
         p.s.normal = normal_by_m(scene_.data.instances[hit.instance], p.s.object_normal);
     p.dir = glm::normalize(ray.direction);
-    p.time = ray.time;
     p.outside = glm::dot(p.s.normal, -p.dir) >= 0.0f;
     p.n = p.outside ? p.s.normal : -p.s.normal;  // faces the viewer: lighting only
     const float offset = variant_ && conventions_.no_offset ? 0.0f : surface_offset(p.s.point);
@@ -200,7 +209,7 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::shading_point(const Ray& ray,
 // The texture read again with the filter asked for, over the hit's footprint when the ray has
 // differentials (their hit's SurfaceDifferentials also carry them on through mirrors and glass).
 void WhittedIntegrator::filter_texture(ShadingPoint& p, const Hit& hit, Differentials* d) const {
-    p.differentials = d && surface_differentials(scene_, hit, p.s, d->ray, d->surface);
+    p.differentials = d && surface_differentials(scene_, hit, p.s, d->ray, d->surface, p.time);
     refilter_texture(scene_, p.s, filter_, p.differentials ? &d->surface.uv : nullptr);
 }
 

@@ -112,7 +112,7 @@ const std::vector<Setting>& render_settings_table() {
         {"shutter", "Shutter",
          "Motion blur: T0,T1 is the interval the shutter is open, relative to the image's scene time (--time, or "
          "each frame's with --frames); each sample takes its own time in it and moving objects (velocity, "
-         "angularrate) are met where they are then. Default: the instant itself. Whitted mode only; give --spp or "
+         "angularrate) are met where they are then. Default: the instant itself. Give --spp or "
          "--aa for samples (one sample per pixel is taken mid-shutter)",
          &S::shutter, 0, 0, {}, true, kViewer, "", kViewerShowsOneInstant},
         {"threads", "Threads", "Worker threads (0 = all hardware threads)", &S::threads, 0, 1024, {}, false},
@@ -244,12 +244,6 @@ std::string validate(RenderSettings& s) {
     if (!s.shutter.empty()) {
         if (!parse_shutter(s.shutter))
             return "--shutter " + s.shutter + " is not an interval T0,T1 of scene time (two numbers, T0 <= T1)";
-        if (s.mode != "whitted")
-            return "--shutter is traced in whitted mode only so far: the " + s.mode +
-                   " mode's rays do not yet carry a sample's time";
-        if (s.texture_filter != "bilinear" && s.texture_filter != "nearest")
-            return "--shutter with --texture-filter " + s.texture_filter +
-                   " is not supported yet: the texture footprint does not yet follow a moving object";
     }
     if (!s.aov_file.empty() && s.aov.empty()) return "--aov-file names where --aov's layers go: give --aov too";
     if (!s.aov.empty()) {

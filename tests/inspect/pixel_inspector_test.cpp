@@ -206,6 +206,11 @@ TEST(PixelInspector, LitFloorMatchesTheHandComputedDiffuse) {
     EXPECT_NEAR(r.lights[0].term.n_dot_l, n_dot_l, 1e-5f);
     EXPECT_NEAR(r.parts.diffuse.x, 0.6f * n_dot_l, 1e-5f);
     EXPECT_NEAR(r.parts.ambient.x, 0.1f, 1e-6f);
+    // The texture coordinates are reported though the floor has no texture: §8's top face of the
+    // cube scaled 20 × 0.2 × 20, u = x/20 + 0.5, v = z/20 + 0.5.
+    EXPECT_EQ(r.texture_file, "");
+    EXPECT_NEAR(r.hit->uv.x, h.x / 20.0f + 0.5f, 1e-5f);
+    EXPECT_NEAR(r.hit->uv.y, h.z / 20.0f + 0.5f, 1e-5f);
 }
 
 TEST(PixelInspector, NamesWhatTheMirrorReflects) {

@@ -217,6 +217,57 @@ TEST(Caustics, SameBytesForAnyThreadCountAndInPassesOrInOneGo) {
     }
 }
 
+// A mirror plate moving during the shutter (motion blur): each photon has a time of its own,
+// uniform over the shutter, and meets the mirror where it is then. A directional light shines down
+// on a 2 × 2 plate at 45° (its top face seen from above: 2√2 of area), which turns the light
+// toward +x onto a wall; the plate moves along z at 4 units per unit of time. A photon's z on the
+// wall is the z where it met the plate (uniform over [−1, 1]) plus 4t: over the shutter [0, 1] the
+// sum of two independent uniforms, of mean 2 and variance 1/3 + 16/12; at one instant, mean 0 and
+// variance 1/3. The light's flux into the mirror is the same at every instant: π · C · 2√2.
+TEST(Caustics, PhotonsOfAMovingMirrorEachTakeATimeOfTheShutter) {
+    const std::string text = "camera [ eye 0 5 30 focus 0 5 0 ]\n"
+                             "light [ type directional direction 0 -1 0 color 1 1 1 ]\n"
+                             "mastersubgraph root [\n"
+                             "  trans [ translate 0 5 0 velocity 0 0 4 rotate 0 0 1 -45 scale 2 0.02 2 object cube "
+                             "[ diffuse 0 0 0 reflect 1 1 1 ] ]\n"
+                             "  trans [ translate 10.5 5 2 scale 1 10 12 object cube [ diffuse 0.5 0.5 0.5 ] ]\n"
+                             "]\n";
+    const int photons = 1 << 18;
+    for (const bool shutter : {false, true}) {
+        SCOPED_TRACE(shutter);
+        LoadOptions lo;
+        lo.shutter = shutter;
+        lo.shutter_close = 1;
+        LoadResult r = load_scene_text(text, "moving_mirror.sc", lo);
+        ASSERT_TRUE(r.ok());
+        ASSERT_EQ(!r.scene->motion.empty(), shutter);
+        // Every photon that reaches the wall is stored there (two surfaces: the mirror, the wall).
+        const auto caustic = photon_pass(*r.scene, photons, 2);
+        const auto& stored = caustic->photon_map().photons();
+        ASSERT_GT(stored.size(), 1000u);
+        double sz = 0, szz = 0, power = 0, lo_z = 1e9, hi_z = -1e9;
+        for (const Photon& p : stored) {
+            EXPECT_NEAR(p.position.x, 10.0, 1e-3);
+            EXPECT_NEAR(p.position.y, 5.0, 0.75);
+            sz += p.position.z, szz += double(p.position.z) * p.position.z;
+            lo_z = std::min(lo_z, double(p.position.z)), hi_z = std::max(hi_z, double(p.position.z));
+            power += p.power.y;
+        }
+        const double N = double(stored.size()), mean = sz / N, var = szz / N - mean * mean;
+        const double want_mean = shutter ? 2.0 : 0.0, want_var = shutter ? 1.0 / 3 + 16.0 / 12 : 1.0 / 3;
+        // The sample variance's standard error: sqrt((μ4 − σ⁴) / N); μ4 of a sum of independent
+        // uniforms of widths 2 and 4 is 2⁴/80 + 6 · (1/3)(4/3) + 4⁴/80, of one of width 2 is 2⁴/80.
+        const double mu4 = shutter ? 0.2 + 6.0 * (1.0 / 3) * (4.0 / 3) + 3.2 : 0.2;
+        EXPECT_NEAR(mean, want_mean, 4 * std::sqrt(want_var / N));
+        EXPECT_NEAR(var, want_var, 4 * std::sqrt((mu4 - want_var * want_var) / N));
+        EXPECT_GE(lo_z, -1.0 - 1e-3);
+        EXPECT_LE(hi_z, (shutter ? 5.0 : 1.0) + 1e-3);
+        // Each photon carries the same flux (the disc's, over the photons): the total is binomial.
+        const double each = stored[0].power.y, p_hit = N / photons;
+        EXPECT_NEAR(power / photons, kPi * 2 * std::sqrt(2.0), 4 * each * std::sqrt(p_hit * (1 - p_hit) / photons));
+    }
+}
+
 TEST(Caustics, CancelStopsThePhotonPass) {
     const auto scene = load(ball_scene(20.0f, 3.0f));
     CausticSettings c;

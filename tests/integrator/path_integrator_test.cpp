@@ -135,7 +135,7 @@ TEST(PathLights, AreaDensityIntegratesToOneUnderNonUniformScale) {
             const glm::vec3 p_obj = to_object_space(inst, Ray{inside, w}).at(hit.t);
             const glm::vec3 n_obj = unit_shape_normal(kind, hit.part, p_obj);
             const glm::vec3 n_world = normal_to_world(inst, n_obj);
-            const double pdf_w = lights.pdf_area(0, inside, n_obj) * hit.t * hit.t / std::abs(glm::dot(n_world, w));
+            const double pdf_w = lights.pdf_area(0, inside, inside + hit.t * w, n_obj) * hit.t * hit.t / std::abs(glm::dot(n_world, w));
             terms.push_back(4 * kPi * pdf_w);
         }
         const Stats s = stats_of(terms);

@@ -121,7 +121,7 @@ TEST(PathMeshLight, SamplesAreUniformByWorldAreaUnderAnAffineMap) {
         centroid += a * (w[0] + w[1] + w[2]) / 3.0;
     }
     centroid /= area;
-    EXPECT_NEAR(lights.pdf_area(0, glm::vec3(0.0f), {0, 1, 0}), 1.0 / area, 1e-5 / area);
+    EXPECT_NEAR(lights.pdf_area(0, glm::vec3(0.0f), glm::vec3(0.0f), {0, 1, 0}), 1.0 / area, 1e-5 / area);
 
     const int n = 20000;
     const Sampler sampler(1, n);
@@ -129,7 +129,7 @@ TEST(PathMeshLight, SamplesAreUniformByWorldAreaUnderAnAffineMap) {
     for (int i = 0; i < n; ++i) {
         const SampleKey key{0, 0, std::uint32_t(i)};
         const AreaLightSample ls = lights.sample_area(0, glm::vec3(0.0f), sampler.get2d(key, 5), sampler.get2d(key, 6).x);
-        EXPECT_FLOAT_EQ(ls.pdf_area, lights.pdf_area(0, glm::vec3(0.0f), {0, 1, 0}));
+        EXPECT_FLOAT_EQ(ls.pdf_area, lights.pdf_area(0, glm::vec3(0.0f), ls.point, {0, 1, 0}));
         for (int k = 0; k < 3; ++k) coords[k].push_back(ls.point[k]);
     }
     for (int k = 0; k < 3; ++k) {
@@ -146,7 +146,7 @@ TEST(PathMeshLight, SamplesAreUniformByWorldAreaUnderAnAffineMap) {
         Hit hit;
         ASSERT_TRUE(scene.intersect(Ray{inside, w}, hit));
         const glm::vec3 n_obj = glm::normalize(triangle_geometric_normal(mesh, hit.triangle));
-        const double pdf_w = lights.pdf_area(0, glm::vec3(0.0f), n_obj) * hit.t * hit.t / std::abs(glm::dot(normal_to_world(inst, n_obj), w));
+        const double pdf_w = lights.pdf_area(0, glm::vec3(0.0f), inside + hit.t * w, n_obj) * hit.t * hit.t / std::abs(glm::dot(normal_to_world(inst, n_obj), w));
         terms.push_back(4 * kPi * pdf_w);
     }
     const Stats s = stats_of(terms);

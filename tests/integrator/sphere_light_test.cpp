@@ -67,7 +67,7 @@ TEST(SphereLight, EverySampleIsSeenAndCarriesTheConesSolidAngle) {
             ASSERT_NEAR(hit.t, d, 2e-3f * d);
             // The density pdf_area reports for the point (a BSDF ray's MIS weight) is the one drawn with.
             const glm::vec3 n_obj = glm::normalize(glm::vec3(to_object_space(scene.data.instances[0], Ray{ls.point, {}}).origin));
-            EXPECT_NEAR(lights.pdf_area(0, x, n_obj), ls.pdf_area, 1e-3f * ls.pdf_area);
+            EXPECT_NEAR(lights.pdf_area(0, x, ls.point, n_obj), ls.pdf_area, 1e-3f * ls.pdf_area);
             const double cos_l = std::abs(glm::dot(ls.normal, to / d));
             ASSERT_NEAR(cos_l / (ls.pdf_area * double(d) * d), omega, 2e-3 * omega);
         }
@@ -119,7 +119,7 @@ TEST(SphereLight, DensityIntegratesToOneOverTheDirectionsThatMeetIt) {
             const glm::vec3 p = to_object_space(inst, Ray{x, w}).at(hit.t);
             const glm::vec3 n_obj = glm::normalize(p);
             const double cos_l = std::abs(glm::dot(normal_to_world(inst, n_obj), w));
-            terms.push_back(4 * kPi * lights.pdf_area(0, x, n_obj) * hit.t * hit.t / cos_l);
+            terms.push_back(4 * kPi * lights.pdf_area(0, x, x + hit.t * w, n_obj) * hit.t * hit.t / cos_l);
         }
         const auto integral = stats_of(terms);
         EXPECT_NEAR(integral.mean, 1.0, 4 * integral.se + 1e-3);
