@@ -9,7 +9,7 @@ set -euo pipefail
 # libjpeg-dev: JPEG textures (Debian's stb aborts on an assertion with a corrupt Huffman table).
 # clang, libclang-rt-dev: the libFuzzer targets of fuzz/ (scripts/fuzz.sh); libFuzzer and clang's
 # sanitizer runtimes are in libclang-rt-dev, which clang only recommends.
-# libtinyobjloader-dev: reads the OBJ files of `object mesh` (scene-format.md §9.3).
+# libtinyobjloader-dev: the reference the tests hold whitted's OBJ line parser to (scene-format.md §9.3).
 # nlohmann-json3-dev: reads Brown CSCI 1230's JSON scene files (scene-format.md §9.5).
 # chromium: only to test `whitted grade`'s HTML report (a headless screenshot of the page); whitted never runs it.
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libcli11-dev libgtest-dev libgmock-dev

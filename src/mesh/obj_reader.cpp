@@ -5,112 +5,101 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <istream>
 #include <limits>
-#include <streambuf>
 #include <vector>
 
-#include <tiny_obj_loader.h>
-
 #include "base/read_file.h"
+#include "mesh/obj_line.h"
 #include "mesh/polygon_split.h"
 
 namespace whitted {
 namespace {
 
-// The text handed to tinyobjloader 64 KiB at a time, from memory or from a file read as it goes
-// (never held whole): between pieces the cancel flag (and a reason of our own to stop) is looked
-// at, and where the parser is in the text is always known, for the line of an error (its
-// callbacks do not say).
-class TextBuffer : public std::streambuf {
+// The lines of the text, from memory or from a file read 64 KiB at a time (never held whole; a
+// line longer than a piece makes the piece grow to hold it). Lines end at \n, \r\n and a lone \r
+// alike. Between pieces (every 64 KiB of text in memory) the cancel flag and a reason of our own
+// to stop are looked at; the number of the last line given and where it ended are always known.
+class LineSource {
 public:
     static constexpr std::size_t kPiece = 64 << 10;
 
-    TextBuffer(std::string_view text, const std::atomic<bool>* cancel) : text_(text), cancel_(cancel) {}
-    TextBuffer(FileReader& file, const std::atomic<bool>* cancel) : file_(&file), piece_(kPiece), cancel_(cancel) {}
+    LineSource(std::string_view text, const std::atomic<bool>* cancel)
+        : data_(text.data()), size_(text.size()), eof_(true), next_look_(kPiece), cancel_(cancel) {}
+    LineSource(FileReader& file, const std::atomic<bool>* cancel) : file_(&file), piece_(kPiece), cancel_(cancel) {
+        data_ = piece_.data();
+    }
     // The text ends early once `*stop` is set.
     void stop_when(const bool* stop) { stop_ = stop; }
-    std::size_t offset() const { return piece_start_ + std::size_t(gptr() - eback()); }
     bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
     // Why the file could not be read to its end ("" if it was, or the text is in memory).
     std::string read_error() const { return file_ && !file_->info().cancelled ? file_->info().error : std::string(); }
     // Bytes of the text held in memory: all of it, or the piece read.
-    std::size_t held() const { return file_ ? piece_.size() : text_.size(); }
+    std::size_t held() const { return file_ ? piece_.size() : size_; }
+    // The 1-based number of the last line given, and the offset in the text just past its break.
+    int line() const { return line_; }
+    std::size_t offset() const { return base_ + at_; }
 
-    // The 1-based line of the text that ends at offset() (just past its line break, as
-    // tinyobjloader leaves the stream after a line; it ends lines at \n, \r\n and a lone \r alike).
-    // Lines are counted from the first time this is asked (a file's pieces before read again),
-    // then as the pieces pass: a file without errors or faces naming later vertices counts none.
-    int line() {
-        if (!counting_) {
-            counting_ = true;
-            if (file_) {
-                const std::size_t resume = file_->position();
-                std::vector<char> before(kPiece);
-                file_->seek(0);
-                for (std::size_t at = 0; at < piece_start_;) {
-                    const std::size_t n = file_->read(before.data(), std::min(kPiece, piece_start_ - at));
-                    if (n == 0) break;  // (the file changed under us: the line is only a hint)
-                    count(before.data(), before.data() + n);
-                    at += n;
-                }
-                file_->seek(resume);
-            } else {
-                count(text_.data(), text_.data() + piece_start_);
+    // The next line, without its break; false at the end of the text, or to stop.
+    bool next(std::string_view& line) {
+        for (;;) {
+            if (base_ + at_ >= next_look_ && !look()) return false;
+            const char* p = data_ + at_;
+            const char* e = data_ + size_;
+            // The first \n, or a \r before it.
+            const char* nl = static_cast<const char*>(std::memchr(p, '\n', std::size_t(e - p)));
+            const char* q = nl ? nl : e;
+            if (const void* cr = std::memchr(p, '\r', std::size_t(q - p))) q = static_cast<const char*>(cr);
+            // A line ends at its break, or at the end of the text; a \r the piece's last byte
+            // waits for the next piece (a \n after it is part of the same break).
+            if (q < e && !(*q == '\r' && q + 1 == e && !eof_)) {
+                line = std::string_view(p, std::size_t(q - p));
+                at_ = std::size_t(q - data_) + 1 + (*q == '\r' && q + 1 < e && q[1] == '\n');
+                ++line_;
+                return true;
             }
-            counted_ = eback();
+            if (eof_) {
+                if (p == e) return false;
+                line = std::string_view(p, std::size_t(e - p));
+                at_ = size_;
+                ++line_;
+                return true;
+            }
+            if (!refill()) return false;
         }
-        count(counted_, gptr());
-        counted_ = gptr();
-        return int(lines_ + (pending_cr_ ? 1 : 0) + (last_ == '\n' || last_ == '\r' ? 0 : 1));
-    }
-
-protected:
-    int_type underflow() override {
-        if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
-        if ((stop_ && *stop_) || cancelled()) return traits_type::eof();
-        if (counting_) count(counted_, egptr());
-        piece_start_ += std::size_t(egptr() - eback());
-        char* begin;
-        std::size_t n;
-        if (file_) {
-            begin = piece_.data();
-            n = file_->read(begin, piece_.size());
-        } else {
-            begin = const_cast<char*>(text_.data()) + piece_start_;
-            n = std::min(kPiece, text_.size() - piece_start_);
-        }
-        setg(begin, begin, begin + n);
-        counted_ = begin;
-        if (n == 0) return traits_type::eof();
-        return traits_type::to_int_type(*gptr());
     }
 
 private:
-    // Line breaks: every \n, and every \r not followed by \n (one pending at the end of a range).
-    void count(const char* b, const char* e) {
-        if (b >= e) return;
-        if (pending_cr_ && *b != '\n') ++lines_;
-        pending_cr_ = false;
-        lines_ += std::size_t(std::count(b, e, '\n'));
-        for (const char* p = b; (p = static_cast<const char*>(std::memchr(p, '\r', std::size_t(e - p)))); ++p) {
-            if (p + 1 == e) pending_cr_ = true;
-            else if (p[1] != '\n') ++lines_;
-        }
-        last_ = e[-1];
+    bool look() {
+        next_look_ = base_ + at_ + kPiece;
+        return !((stop_ && *stop_) || cancelled());
+    }
+    // The unread part moved to the front and the rest of the piece read (the piece doubled when
+    // one line fills it).
+    bool refill() {
+        if (!look()) return false;
+        const std::size_t keep = size_ - at_;
+        if (keep == piece_.size()) piece_.resize(2 * piece_.size());
+        std::memmove(piece_.data(), piece_.data() + at_, keep);
+        base_ += at_;
+        at_ = 0;
+        data_ = piece_.data();
+        const std::size_t n = file_->read(piece_.data() + keep, piece_.size() - keep);
+        size_ = keep + n;
+        if (n == 0) eof_ = true;
+        return true;
     }
 
-    std::string_view text_;
     FileReader* file_ = nullptr;
     std::vector<char> piece_;
-    std::size_t piece_start_ = 0;  // offset of eback() in the text
+    const char* data_ = nullptr;  // the text in memory, or the piece
+    std::size_t size_ = 0;        // of data_
+    std::size_t at_ = 0;          // where the next line starts in data_
+    std::size_t base_ = 0;        // offset of data_ in the text
+    bool eof_ = false;            // data_ holds the text's end
+    std::size_t next_look_ = 0;   // the offset at which to look at the flags again
+    int line_ = 0;
     const std::atomic<bool>* cancel_;
     const bool* stop_ = nullptr;
-    bool counting_ = false;
-    const char* counted_ = nullptr;  // lines are counted up to here in the piece
-    std::size_t lines_ = 0;
-    bool pending_cr_ = false;
-    char last_ = 0;  // the last byte counted
 };
 
 constexpr const char* kNames[3] = {"vertex", "texture coordinate", "normal"};
@@ -129,43 +118,59 @@ struct CornerKey {
     bool operator==(const CornerKey&) const = default;
 };
 
-// The mesh vertex of each distinct corner key: an open-addressing table of vertex numbers, each
-// vertex's key kept beside it in vertex order (about 20 bytes a vertex). A node-based map cost
-// about 64 bytes a vertex in small heap blocks, which the allocator kept after they were freed,
-// so that the BVH build that follows started from a resident heap the size of the map.
+// The mesh vertex of each distinct corner key, numbered in order of first use. The first key of
+// each file position is found by the position's number (faces name positions near each other, so
+// that look-up stays in the cache); the others (a seam's second uv, a crease's second normal) in
+// an open-addressing table of vertex numbers. Each vertex's key is kept in vertex order (about 16
+// bytes a vertex with the position's slot). A node-based map cost about 64 bytes a vertex in
+// small heap blocks, which the allocator kept after they were freed, so that the BVH build that
+// follows started from a resident heap the size of the map.
 class VertexTable {
 public:
-    void reserve(std::size_t vertices) {
+    void reserve(std::size_t vertices, std::size_t positions) {
         keys_.reserve(vertices);
+        first_.reserve(positions);
         std::size_t size = 16;
-        while (size < 2 * vertices) size *= 2;
+        while (size < vertices / 8) size *= 2;  // a sixteenth of them on seams, half full; it grows
         if (size > slots_.size()) rehash(size);
     }
-    // The vertex of `key`; a new one (numbered in order of first use) when `added`.
+    // The vertex of `key`; a new one when `added`.
     std::uint32_t find_or_add(const CornerKey& key, bool& added) {
-        if ((keys_.size() + 1) * 2 > slots_.size()) rehash(std::max<std::size_t>(16, slots_.size() * 2));
+        if (key.v >= first_.size()) first_.resize(std::size_t(key.v) + 1, kNoIndex);
+        std::uint32_t& first = first_[key.v];
+        added = false;
+        if (first == kNoIndex) {
+            added = true;
+            return first = add(key);
+        }
+        if (keys_[first] == key) return first;
+        if ((count_ + 1) * 2 > slots_.size()) rehash(std::max<std::size_t>(16, slots_.size() * 2));
         const std::size_t mask = slots_.size() - 1;
         for (std::size_t i = hash(key) & mask;; i = (i + 1) & mask) {
             const std::uint32_t s = slots_[i];
             if (s == kNoIndex) {
-                slots_[i] = std::uint32_t(keys_.size());
-                keys_.push_back(key);
+                ++count_;
                 added = true;
-                return slots_[i];
+                return slots_[i] = add(key);
             }
-            if (keys_[s] == key) {
-                added = false;
-                return s;
-            }
+            if (keys_[s] == key) return s;
         }
     }
-    std::size_t bytes() const { return keys_.capacity() * sizeof(CornerKey) + slots_.capacity() * sizeof(std::uint32_t); }
+    std::size_t bytes() const {
+        return keys_.capacity() * sizeof(CornerKey) + (first_.capacity() + slots_.capacity()) * sizeof(std::uint32_t);
+    }
     void release() {
         BigVector<CornerKey>().swap(keys_);
+        BigVector<std::uint32_t>().swap(first_);
         BigVector<std::uint32_t>().swap(slots_);
+        count_ = 0;
     }
 
 private:
+    std::uint32_t add(const CornerKey& key) {
+        keys_.push_back(key);
+        return std::uint32_t(keys_.size() - 1);
+    }
     static std::size_t hash(const CornerKey& k) {
         std::uint64_t h = k.v * 0x9E3779B97F4A7C15ull;
         h ^= (h >> 29) + k.n * 0xBF58476D1CE4E5B9ull;
@@ -173,22 +178,28 @@ private:
         return std::size_t(h ^ (h >> 32));
     }
     void rehash(std::size_t size) {
-        BigVector<std::uint32_t>(size, kNoIndex).swap(slots_);
+        BigVector<std::uint32_t> old(size, kNoIndex);
+        old.swap(slots_);
         const std::size_t mask = size - 1;
-        for (std::uint32_t k = 0; k < keys_.size(); ++k) {
-            std::size_t i = hash(keys_[k]) & mask;
-            while (slots_[i] != kNoIndex) i = (i + 1) & mask;
-            slots_[i] = k;
-        }
+        for (std::uint32_t k : old)
+            if (k != kNoIndex) {
+                std::size_t i = hash(keys_[k]) & mask;
+                while (slots_[i] != kNoIndex) i = (i + 1) & mask;
+                slots_[i] = k;
+            }
     }
-    BigVector<CornerKey> keys_;
-    BigVector<std::uint32_t> slots_;
+    BigVector<CornerKey> keys_;       // of each vertex
+    BigVector<std::uint32_t> first_;  // per file position: its first vertex (kNoIndex: none yet)
+    BigVector<std::uint32_t> slots_;  // the other keys' vertices
+    std::size_t count_ = 0;           // in slots_
 };
 
 // Triangles with the same three positions in the same order as one kept before: the same triangle
 // to every ray (the same arithmetic gives the same hit, and of equal hits the first is taken), so
 // drawing it again only costs; a file of a million copies of one triangle made every ray that
-// met it test them all. An open-addressing table of triangle numbers, hashed by position bits.
+// met it test them all. An open-addressing table of triangle numbers, hashed by position bits,
+// each beside 32 more bits of its hash: a probe that meets another triangle is told apart there,
+// without the three positions' cache misses (nearly every triangle of a file is new).
 class SameTriangles {
 public:
     explicit SameTriangles(std::size_t expected) {
@@ -200,23 +211,27 @@ public:
     bool repeats(const TriangleMesh& mesh, const glm::vec3* const (&p)[3], std::uint32_t next) {
         if ((count_ + 1) * 2 > slots_.size()) grow(mesh);  // (before `next` is in the table: not in the mesh yet)
         const std::size_t mask = slots_.size() - 1;
-        for (std::size_t i = hash(p) & mask;; i = (i + 1) & mask) {
-            if (slots_[i] == kEmpty) {
-                slots_[i] = next;
+        const std::uint64_t h = hash(p), tag = h & 0xffffffff00000000ull;
+        for (std::size_t i = std::size_t(h) & mask;; i = (i + 1) & mask) {
+            const std::uint64_t slot = slots_[i];
+            if (slot == kEmpty) {
+                slots_[i] = tag | next;
                 ++count_;
                 return false;
             }
-            const TriangleIndices& t = mesh.triangles[slots_[i]];
+            if ((slot & 0xffffffff00000000ull) != tag) continue;
+            const TriangleIndices& t = mesh.triangles[std::uint32_t(slot)];
             if (same(mesh.positions[t[0]], *p[0]) && same(mesh.positions[t[1]], *p[1]) &&
                 same(mesh.positions[t[2]], *p[2]))
                 return true;
         }
     }
-    std::size_t bytes() const { return slots_.capacity() * sizeof(std::uint32_t); }
+    std::size_t bytes() const { return slots_.capacity() * sizeof(std::uint64_t); }
 
 private:
-    static constexpr std::uint32_t kEmpty = 0xffffffffu;
-    static std::size_t hash(const glm::vec3* const (&p)[3]) {
+    static constexpr std::uint64_t kEmpty = ~std::uint64_t(0);  // (no triangle is number 2^32 - 1)
+    // The low bits pick the slot, the high 32 are kept in it.
+    static std::uint64_t hash(const glm::vec3* const (&p)[3]) {
         std::uint64_t h = 0x84222325cbf29ce4ull;
         for (const glm::vec3* c : p)
             for (int a = 0; a < 3; ++a) {
@@ -224,23 +239,24 @@ private:
                 std::memcpy(&bits, &(*c)[a], sizeof bits);
                 h = (h ^ bits) * 0x100000001b3ull;
             }
-        return std::size_t(h ^ (h >> 29));
+        h ^= h >> 29;
+        return h * 0xbf58476d1ce4e5b9ull;
     }
     static bool same(const glm::vec3& a, const glm::vec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
     void grow(const TriangleMesh& mesh) {
-        BigVector<std::uint32_t> old(slots_.size() * 2, kEmpty);
+        BigVector<std::uint64_t> old(slots_.size() * 2, kEmpty);
         old.swap(slots_);
         const std::size_t mask = slots_.size() - 1;
-        for (std::uint32_t t : old)
-            if (t != kEmpty) {
-                const TriangleIndices& c = mesh.triangles[t];
+        for (std::uint64_t slot : old)
+            if (slot != kEmpty) {
+                const TriangleIndices& c = mesh.triangles[std::uint32_t(slot)];
                 const glm::vec3* const p[3] = {&mesh.positions[c[0]], &mesh.positions[c[1]], &mesh.positions[c[2]]};
-                std::size_t i = hash(p) & mask;
+                std::size_t i = std::size_t(hash(p)) & mask;
                 while (slots_[i] != kEmpty) i = (i + 1) & mask;
-                slots_[i] = t;
+                slots_[i] = slot;
             }
     }
-    BigVector<std::uint32_t> slots_;  // on 2 MB pages: each probe is a miss, not a TLB miss too
+    BigVector<std::uint64_t> slots_;  // on 2 MB pages: each probe is a miss, not a TLB miss too
     std::size_t count_ = 0;
 };
 
@@ -251,7 +267,7 @@ std::string memory_error(std::size_t limit) {
 
 // How many of each kind of line the text has (a line's first word only): what the arrays are
 // reserved for before the parse, so that none of them grows by doubling (up to twice its size,
-// and a copy) on a big file. A hint: a line tinyobjloader reads otherwise only costs a regrowth.
+// and a copy) on a big file. A hint: a line the parse reads otherwise only costs a regrowth.
 // Fed the text in pieces, in order.
 struct LineCounts {
     std::size_t v = 0, vn = 0, vt = 0, f = 0;
@@ -292,14 +308,14 @@ private:
     char first_ = 0;        // a line's first character, when a piece ended after it
 };
 
-// The parse and the mesh made as it goes, filled by tinyobjloader's callbacks. A face is split
-// into triangles and its corners made vertices as soon as it is read, so that neither
-// tinyobjloader's arrays nor a copy of every corner is held while the mesh is made: of a file's
+// The parse and the mesh made as it goes, a line at a time. A face is split into triangles and
+// its corners made vertices as soon as it is read, so that no copy of every corner is held while
+// the mesh is made: of a file's
 // own arrays only its v, vn and vt stay (the faces look them up anywhere behind them). Faces from
 // the first one naming a definition further down (OBJ allows it) are kept, and made triangles in
 // file order once the file is read.
 struct Parse {
-    TextBuffer* buffer = nullptr;
+    LineSource* buffer = nullptr;
     TriangleMesh* mesh = nullptr;
     ObjReadResult* result = nullptr;
     std::vector<glm::vec3> v, vn;
@@ -399,36 +415,17 @@ struct Parse {
     }
 };
 
-void on_vertex(void* p, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z, tinyobj::real_t) {
-    Parse& s = *static_cast<Parse*>(p);
-    s.v.emplace_back(x, y, z);
-    s.spend();
-}
-
-void on_normal(void* p, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z) {
-    Parse& s = *static_cast<Parse*>(p);
-    s.vn.emplace_back(x, y, z);
-    s.spend();
-}
-
-void on_texcoord(void* p, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t) {
-    Parse& s = *static_cast<Parse*>(p);
-    s.vt.emplace_back(x, y);
-    s.spend();
-}
-
 // A face: its raw OBJ indices (1-based; negative count back from the last definition so far; 0 is
 // none for vt and vn, and for v either a 0 or no number at all) made 0-based and checked.
-void on_face(void* p, tinyobj::index_t* raw, int n) {
-    Parse& s = *static_cast<Parse*>(p);
+void on_face(Parse& s, const ObjCorner* raw, int n) {
     if (s.stop || !s.error.empty()) return;
-    // tinyobjloader holds the face too while this runs, and its line.
-    s.spend(std::size_t(n) * (sizeof(tinyobj::index_t) + 2 * sizeof(Corner)));
+    // The line's corners are held too while this runs.
+    s.spend(std::size_t(n) * (sizeof(ObjCorner) + 2 * sizeof(Corner)));
     if (s.stop) return;
     std::int64_t ahead[3] = {-1, -1, -1};
     s.face.clear();
     for (int c = 0; c < n; ++c) {
-        const int given[3] = {raw[c].vertex_index, raw[c].texcoord_index, raw[c].normal_index};
+        const int given[3] = {raw[c].v, raw[c].vt, raw[c].vn};
         Corner corner{};
         for (int k = 0; k < 3; ++k) {
             const std::int64_t r = given[k], defined = std::int64_t(s.count(k));
@@ -474,7 +471,7 @@ void release(std::vector<T>& v) {
 
 // Reads the OBJ text `buffer` gives (counted ahead in `lines`) into `mesh`, which is left
 // cleared by the callers whenever this fails.
-ObjReadResult read_obj_into(TextBuffer& buffer, const LineCounts& lines, const std::string& name, TriangleMesh& mesh,
+ObjReadResult read_obj_into(LineSource& buffer, const LineCounts& lines, const std::string& name, TriangleMesh& mesh,
                             const ObjLimits& limits) {
     ObjReadResult result;
     mesh = TriangleMesh();
@@ -496,7 +493,7 @@ ObjReadResult read_obj_into(TextBuffer& buffer, const LineCounts& lines, const s
     // A vertex per position, and a few more where seams split one; no more than the faces'
     // corners can make (a file of positions alone reserves no mesh for them).
     const std::size_t vertices = std::min(lines.v + lines.v / 16, 3 * lines.f);
-    s.vertices.reserve(vertices);
+    s.vertices.reserve(vertices, lines.v);
     mesh.positions.reserve(vertices);
     if (lines.vn) mesh.normals.reserve(vertices);
     if (lines.vt) mesh.uvs.reserve(vertices);
@@ -508,15 +505,31 @@ ObjReadResult read_obj_into(TextBuffer& buffer, const LineCounts& lines, const s
         return result;
     }
 
-    std::istream in(&buffer);
-    tinyobj::callback_t callbacks;
-    callbacks.vertex_cb = on_vertex;
-    callbacks.normal_cb = on_normal;
-    callbacks.texcoord_cb = on_texcoord;
-    callbacks.index_cb = on_face;
-    // No material reader: `mtllib` and `usemtl` are ignored (the scene's material applies).
-    std::string warn, err;
-    tinyobj::LoadObjWithCallback(in, callbacks, &s, nullptr, &warn, &err);
+    // `mtllib` and `usemtl` are ignored (the scene's material applies), as are `o`, `g` and `s`.
+    std::string_view text;
+    ObjLine line;
+    while (!s.stop && buffer.next(text)) {
+        parse_obj_line(text, line);
+        switch (line.kind) {
+        case ObjLineKind::Vertex:
+            s.v.emplace_back(line.xyz[0], line.xyz[1], line.xyz[2]);
+            s.spend();
+            break;
+        case ObjLineKind::Normal:
+            s.vn.emplace_back(line.xyz[0], line.xyz[1], line.xyz[2]);
+            s.spend();
+            break;
+        case ObjLineKind::TexCoord:
+            s.vt.emplace_back(line.xyz[0], line.xyz[1]);
+            s.spend();
+            break;
+        case ObjLineKind::Face:
+            if (!line.corners.empty()) on_face(s, line.corners.data(), int(line.corners.size()));
+            break;
+        case ObjLineKind::Other:
+            break;
+        }
+    }
     if (buffer.cancelled()) {
         result.cancelled = true;
         return result;
@@ -595,7 +608,7 @@ ObjReadResult read_obj_text(std::string_view text, const std::string& name, Tria
                             const ObjLimits& limits) {
     LineCounts lines;
     lines.feed(text.data(), text.data() + text.size());
-    TextBuffer buffer(text, limits.cancel);
+    LineSource buffer(text, limits.cancel);
     ObjReadResult result = read_obj_into(buffer, lines, name, mesh, limits);
     if (!result.ok) mesh = TriangleMesh();  // nothing half-made is left
     return result;
@@ -604,12 +617,12 @@ ObjReadResult read_obj_text(std::string_view text, const std::string& name, Tria
 ObjReadResult read_obj_file(FileReader& file, const std::string& name, TriangleMesh& mesh, const ObjLimits& limits) {
     // The pieces read twice: counted first (a hint for the arrays), then parsed.
     LineCounts lines;
-    std::vector<char> piece(TextBuffer::kPiece);
+    std::vector<char> piece(LineSource::kPiece);
     const std::size_t start = file.position();
     for (std::size_t n; (n = file.read(piece.data(), piece.size())) > 0;) lines.feed(piece.data(), piece.data() + n);
     file.seek(start);
     std::vector<char>().swap(piece);
-    TextBuffer buffer(file, limits.cancel);
+    LineSource buffer(file, limits.cancel);
     ObjReadResult result = read_obj_into(buffer, lines, name, mesh, limits);
     if (!result.ok) mesh = TriangleMesh();
     return result;

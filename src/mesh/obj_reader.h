@@ -1,6 +1,6 @@
 #pragma once
-// Reads a Wavefront OBJ file into a TriangleMesh (scene-format.md §9.3) with tinyobjloader's
-// line parser: positions, normals and texture coordinates; polygons split into triangles
+// Reads a Wavefront OBJ file into a TriangleMesh (scene-format.md §9.3), a line at a time in
+// tinyobjloader's grammar (mesh/obj_line.h): positions, normals and texture coordinates; polygons split into triangles
 // (mesh/polygon_split.h); OBJ materials ignored. Every index a face gives is checked here before
 // anything is looked up with it, and nothing of the file's words is quoted in a message (a file
 // from others may be anything).

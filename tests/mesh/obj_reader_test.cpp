@@ -332,6 +332,34 @@ TEST(ObjReader, RepeatedTrianglesAreKeptOnce) {
     EXPECT_EQ(r.duplicates, 999u);
 }
 
+// A position named with many normals is as many vertices, each with its own normal: a fan of N
+// triangles around a centre, each face with a normal of its own, makes the centre N vertices and
+// each rim position between two faces two (3N in all, far more than the file's N + 2 positions).
+TEST(ObjReader, APositionWithManyNormalsIsAVertexForEach) {
+    constexpr int kFan = 1000;
+    std::string text = "v 0 0 0\n";
+    for (int i = 0; i <= kFan; ++i) {
+        const double a = 6.0 * i / kFan;
+        text += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+    }
+    for (int i = 1; i <= kFan; ++i) text += "vn 0 0 " + std::to_string(i) + "\n";
+    for (int i = 1; i <= kFan; ++i) {
+        const std::string n = "//" + std::to_string(i) + " ";
+        text += "f 1" + n + std::to_string(i + 1) + n + std::to_string(i + 2) + n + "\n";
+    }
+    TriangleMesh m;
+    const ObjReadResult r = read_obj_text(text, "fan.obj", m);
+    ASSERT_TRUE(r.ok) << r.error;
+    ASSERT_EQ(m.triangles.size(), std::size_t(kFan));
+    EXPECT_EQ(m.positions.size(), std::size_t(3 * kFan));
+    for (int t = 0; t < kFan; ++t)
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_EQ(m.normals[m.triangles[t][k]], glm::vec3(0, 0, float(t + 1))) << t << " " << k;
+            if (HasFailure()) return;
+        }
+    EXPECT_EQ(m.positions[m.triangles[kFan - 1][0]], glm::vec3(0.0f));
+}
+
 // The memory a mesh needs (its text, what the parse keeps, the triangles with their BVH) is counted
 // as it is read: over the limit it is refused instead of taking gigabytes (a 64 MB file took 1.48 GB).
 TEST(ObjReader, RefusesWhatNeedsMoreMemoryThanTheLimit) {
