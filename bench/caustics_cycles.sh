@@ -57,7 +57,7 @@ whitted() {
     --max-depth "$depth" --threads "$threads" --stats -q > "$out/whitted.log" 2>&1 ||
     { echo "caustics_cycles: whitted failed:" >&2; tail -20 "$out/whitted.log" >&2; exit 1; }
   wall=$(echo "$(now) - $t0" | bc -l)
-  render=$(awk '{ for (i = 1; i < NF; i++) if ($i ~ /^(flatten|textures|build|render)$/ && $(i + 1) ~ /^[0-9.]+s,?$/) {
+  render=$(awk '{ for (i = 1; i < NF; i++) if ($i ~ /^(flatten|textures|meshes|build|render)$/ && $(i + 1) ~ /^[0-9.]+s,?$/) {
                     v = $(i + 1); gsub(/[s,]/, "", v); t += v; n++ } }
                 END { if (n) printf "%.3f\n", t }' "$out/whitted.log")
 }

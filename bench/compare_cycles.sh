@@ -80,9 +80,9 @@ whitted() {
     { echo "compare_cycles: whitted failed on $2:" >&2; tail -20 "$tmp/whitted.log" >&2; exit 1; }
   t1=$(now)
   wall=$(echo "$t1 - $t0" | bc -l)
-  # --stats: "parse 0.001s, flatten 0.000s, textures 0.000s, build 0.000s, render 0.010s (2 threads)";
+  # --stats: "parse 0.001s, flatten 0.000s, textures 0.000s, meshes 0.000s, build 0.000s, render 0.010s (2 threads)";
   # everything but the parse, as Cycles' time has its scene sync and BVH build but not our converter.
-  render=$(awk '{ for (i = 1; i < NF; i++) if ($i ~ /^(flatten|textures|build|render)$/ && $(i + 1) ~ /^[0-9.]+s,?$/) {
+  render=$(awk '{ for (i = 1; i < NF; i++) if ($i ~ /^(flatten|textures|meshes|build|render)$/ && $(i + 1) ~ /^[0-9.]+s,?$/) {
                     v = $(i + 1); gsub(/[s,]/, "", v); t += v; n++ } }
                 END { if (n) printf "%.3f\n", t }' "$tmp/whitted.log")
   [ -n "$render" ] || { echo "compare_cycles: no render time in whitted --stats:" >&2; cat "$tmp/whitted.log" >&2; exit 1; }

@@ -47,11 +47,11 @@ void print_stats(const LoadStats& ls, const RenderStats& rs, int samples_per_pix
     std::fprintf(stderr,
                  "dialect %s\n"
                  "objects %zu, lights %zu, textures %zu; %d samples per pixel in %d passes\n"
-                 "parse %.3fs, flatten %.3fs, textures %.3fs, build %.3fs, render %.3fs (%d threads)\n"
+                 "parse %.3fs, flatten %.3fs, textures %.3fs, meshes %.3fs, build %.3fs, render %.3fs (%d threads)\n"
                  "rays: camera %llu, reflected %llu, refracted %llu, shadow %llu; %.2f Mrays/s\n"
                  "samples rejected (not finite, counted as black): %llu\n",
                  dialect_name(ls.dialect), ls.objects, ls.lights, ls.textures, samples_per_pixel, passes, ls.parse_seconds,
-                 ls.flatten_seconds, ls.texture_seconds, ls.build_seconds, rs.seconds, rs.threads,
+                 ls.flatten_seconds, ls.texture_seconds, ls.mesh_seconds, ls.build_seconds, rs.seconds, rs.threads,
                  (unsigned long long)rs.rays.camera, (unsigned long long)rs.rays.reflected,
                  (unsigned long long)rs.rays.refracted, (unsigned long long)rs.rays.shadow,
                  rs.seconds > 0 ? double(rs.rays.total()) / rs.seconds * 1e-6 : 0.0,

@@ -63,9 +63,9 @@ int render_image(const ImageJob& job, const SharedScene& shared) {
     if (o.stats) {
         const auto& ls = shared.loaded.stats;
         std::fprintf(stderr, "objects %zu, lights %zu, textures %zu; rank 0: parse %.3fs, flatten %.3fs, textures "
-                             "%.3fs, build %.3fs\n",
+                             "%.3fs, meshes %.3fs, build %.3fs\n",
                      ls.objects, ls.lights, ls.textures, ls.parse_seconds, ls.flatten_seconds, ls.texture_seconds,
-                     ls.build_seconds);
+                     ls.mesh_seconds, ls.build_seconds);
     }
     return run_master(s);
 }

@@ -57,13 +57,14 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     if (!drawn_without_textures)  // (every material's texture stays -1, none)
         result.missing_textures = load_textures(flat, assets, textures, result.diagnostics, &result.texture_files,
                                                  &result.texture_paths);
-    result.stats.texture_seconds = since(t);
-    if (has_errors(result.diagnostics) || cancelled()) return result;
+    if (has_errors(result.diagnostics) || cancelled()) return result.stats.texture_seconds = since(t), result;
     for (const TextureImage& image : flat.scene.textures)
         left -= std::min(left, stored_texture_bytes(image.width, image.height, textures.limits));
     if (textures.limits.mip_levels)  // once per texture, however many objects use it
         for (const TextureImage& image : flat.scene.textures)
             flat.scene.texture_levels.push_back(build_mip_levels(image));
+    result.stats.texture_seconds = since(t);
+    t = Clock::now();
     // Meshes (§9.3) are looked up where textures are, through the same door, in what memory is left.
     MeshOptions meshes;
     meshes.search_dirs = options.textures.search_dirs;
@@ -74,6 +75,7 @@ LoadResult finish(ParseResult parsed, const LoadOptions& options, double parse_s
     meshes.preread = options.preread_meshes;
     meshes.keep_files = options.textures.keep_files;
     const MeshLoadResult mesh_load = load_meshes(flat, assets, meshes, result.diagnostics, &result.mesh_files);
+    result.stats.mesh_seconds = since(t);
     result.mesh_paths = mesh_load.paths;
     if (mesh_load.cancelled || cancelled()) return result.cancelled = true, result;
     if (!mesh_load.ok) return result;

@@ -45,7 +45,7 @@ struct LoadOptions {
 };
 
 struct LoadStats {
-    double parse_seconds = 0, flatten_seconds = 0, texture_seconds = 0, build_seconds = 0;
+    double parse_seconds = 0, flatten_seconds = 0, texture_seconds = 0, mesh_seconds = 0, build_seconds = 0;
     std::size_t objects = 0, lights = 0, textures = 0;
     Dialect dialect = Dialect::Labs;  // which family of files the scene is written in (§9.4)
     SampledEffects effects;           // §9.1 effects, which one sample per pixel does not show

@@ -239,7 +239,7 @@ TEST(Cli, StatsCountTheRaysAndTheThreadsUsed) {
     EXPECT_NE(r.output.find("rays: camera 24000,"), std::string::npos) << r.output;  // 100 · 60 · 2²
     EXPECT_NE(r.output.find("(3 threads)"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("objects 1, lights 1"), std::string::npos) << r.output;
-    for (const char* stage : {"parse ", "flatten ", "build ", "render ", "Mrays/s"})
+    for (const char* stage : {"parse ", "flatten ", "textures ", "meshes ", "build ", "render ", "Mrays/s"})
         EXPECT_NE(r.output.find(stage), std::string::npos) << stage << "\n" << r.output;
     // An 8×8 image is one tile: one thread is all that can work on it, and that is what is said.
     r = run_process({test::cli_path(), scene, "-o", dir + "/o.png", "--width", "8", "--height", "8", "--threads", "3",
