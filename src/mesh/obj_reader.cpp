@@ -45,6 +45,10 @@ public:
             if (base_ + at_ >= next_look_ && !look()) return false;
             const char* p = data_ + at_;
             const char* e = data_ + size_;
+            if (p == e) {  // (no text at all may be a null pointer: not searched)
+                if (eof_ || !refill()) return false;
+                continue;
+            }
             // The first \n, or a \r before it.
             const char* nl = static_cast<const char*>(std::memchr(p, '\n', std::size_t(e - p)));
             const char* q = nl ? nl : e;

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -413,6 +414,11 @@ TEST(ObjReader, FileWithoutTrianglesIsAnError) {
         EXPECT_FALSE(r.ok) << text;
         EXPECT_NE(r.error.find("triangle"), std::string::npos) << r.error;
     }
+    // No text at all, not even an empty string's pointer (nothing may be searched at null).
+    TriangleMesh m;
+    const ObjReadResult r = read_obj_text(std::string_view(), "none.obj", m);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("triangle"), std::string::npos) << r.error;
 }
 
 TEST(ObjReader, MissingFileIsAnError) {
