@@ -1,6 +1,8 @@
 // The sampler: a pure function of (pixel, sample index, dimension), stratified as a (0, 2)-net,
 // the centre for one sample, cells for anti-aliasing; and the warps built on it.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -49,6 +51,64 @@ TEST(Sampler, IsAPureFunctionOfPixelIndexAndDimension) {
     EXPECT_NE(a.pixel_offset({9, 2, 3}), a.pixel_offset({10, 2, 3}));
     EXPECT_NE(a.get2d({9, 2, 0}, 5), a.get2d({9, 2, 0}, 6));
     EXPECT_NE(a.get2d({9, 2, 0}, 5), Sampler(1, 64, 1).get2d({9, 2, 0}, 5));
+}
+
+// The sequence as it is defined (Burley 2020: an Owen-scrambled index, the first two Sobol
+// dimensions, each Owen-scrambled), written the plain way: each scramble between two bit
+// reversals, the second dimension's matrix applied bit by bit. The sampler computes it otherwise
+// (reversals that cancel left out, the matrix a byte at a time); its values must be these, bit for
+// bit: every image made before depends on them.
+namespace reference {
+std::uint64_t mix64(std::uint64_t v) {
+    v ^= v >> 30;
+    v *= 0xbf58476d1ce4e5b9ull;
+    v ^= v >> 27;
+    v *= 0x94d049bb133111ebull;
+    v ^= v >> 31;
+    return v;
+}
+std::uint32_t reverse(std::uint32_t v) {
+    std::uint32_t r = 0;
+    for (int b = 0; b < 32; ++b) r |= ((v >> b) & 1u) << (31 - b);
+    return r;
+}
+std::uint32_t sobol_dim1(std::uint32_t i) {  // polynomial x + 1: m_k = 2 m_{k-1} xor m_{k-1}
+    std::uint32_t v = 0, m = 1;
+    for (int k = 0; k < 32; ++k, m = (m << 1) ^ m)
+        if ((i >> k) & 1) v ^= m << (31 - k);
+    return v;
+}
+std::uint32_t owen(std::uint32_t v, std::uint32_t seed) {
+    v = reverse(v);
+    v ^= v * 0x3d20adeau;
+    v += seed;
+    v *= (seed >> 16) | 1u;
+    v ^= v * 0x05526c56u;
+    v ^= v * 0x53a22864u;
+    return reverse(v);
+}
+float unit(std::uint32_t v) { return std::min(float(v) * 0x1p-32f, 0x1.fffffep-1f); }
+glm::vec2 get2d(const SampleKey& key, std::uint32_t dim, std::uint32_t seed) {
+    const std::uint64_t h = mix64((std::uint64_t(key.x) << 32 | key.y) ^ mix64(std::uint64_t(dim) << 32 | seed));
+    const std::uint32_t i = owen(key.index, std::uint32_t(h));
+    return {unit(owen(reverse(i), std::uint32_t(h >> 32))), unit(owen(sobol_dim1(i), std::uint32_t(mix64(h))))};
+}
+}  // namespace reference
+
+TEST(Sampler, IsTheScrambledSobolSequenceBitForBit) {
+    std::uint64_t state = 12345;
+    auto next = [&] { return std::uint32_t((state = reference::mix64(state + 0x9e3779b97f4a7c15ull)) >> 7); };
+    for (std::uint32_t seed : {0u, 7u}) {
+        const Sampler s(1, 4096, seed);
+        for (int n = 0; n < 20000; ++n) {
+            // Small indices (the usual), and any 32-bit ones (the matrix's every byte).
+            const SampleKey key{next() % 2048, next() % 2048, n % 2 ? next() % 4096 : next()};
+            const std::uint32_t dim = next() % 200;
+            ASSERT_EQ(s.get2d(key, dim), reference::get2d(key, dim, seed)) << key.x << " " << key.y << " " << key.index;
+        }
+        for (std::uint32_t i = 0; i < 4096; ++i)
+            ASSERT_EQ(s.pixel_offset({3, 5, i}), reference::get2d({3, 5, i}, dimension::kFilm, seed)) << i;
+    }
 }
 
 // The points of a pixel's 2^m samples in any dimension form a (0, m, 2)-net: every elementary
