@@ -140,6 +140,7 @@ LoadOptions load_options(const RenderOptions& o, const std::atomic<bool>* cancel
 RenderJob render_job(const RenderOptions& o, const std::atomic<bool>* cancel) {
     RenderJob job = make_render_job(o.settings);
     job.cancel = cancel;
+    job.time_rays = o.stats;
     return job;
 }
 

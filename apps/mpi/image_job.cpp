@@ -35,6 +35,7 @@ int render_image(const ImageJob& job, const SharedScene& shared) {
     RankSetup s;
     s.job = render_job(o, nullptr);
     s.job.tile_size = m.tile_size;
+    s.job.time_rays = false;  // rank 0's --stats has no per-kind rates (ranks send their totals only)
     const auto integrator =
         make_integrator(*shared.loaded.scene, s.job.camera_for(*shared.loaded.scene), s.job.integrator);
     s.integrator = integrator.get();

@@ -14,10 +14,10 @@
 #include "base/diagnostic.h"
 #include "camera/camera.h"
 #include "data/shape_kind.h"
+#include "integrator/ray_counts.h"  // RayKind
 
 namespace whitted {
 
-enum class RayKind { Camera, Reflected, Refracted, Shadow };
 const char* ray_kind_name(RayKind kind);  // "camera", "reflected", "refracted", "shadow"
 
 // What a shadow ray meets on its way to the light.

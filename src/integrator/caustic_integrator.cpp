@@ -1,6 +1,7 @@
 #include "integrator/caustic_integrator.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "accel/scene.h"
@@ -205,7 +206,8 @@ bool CausticIntegrator::prepare(const SampleRange& range) const {
 void CausticIntegrator::radiance(const CameraBatch& batch, const Sampler& sampler, glm::vec3 (&out)[kPacketSize],
                                  RayCounts& counts) const {
     Hit hits[kPacketSize];
-    const unsigned found = scene_.intersect(batch.rays, batch.active, hits);
+    const unsigned found = timed_trace(counts, RayKind::Camera, std::popcount(batch.active),
+                                       [&] { return scene_.intersect(batch.rays, batch.active, hits); });
     for (int l = 0; l < kPacketSize; ++l)
         if ((batch.active >> l) & 1) {
             const Hit* first = (found >> l) & 1 ? &hits[l] : nullptr;
@@ -221,9 +223,12 @@ glm::vec3 CausticIntegrator::caustic(const Ray& camera_ray, const SampleKey& key
     const SampleMap& sample_map = maps_[std::size_t(k)];
     Ray ray = camera_ray;
     glm::vec3 beta(1.0f);
+    RayKind kind = RayKind::Camera;
     for (int bounce = 0; bounce < settings_.max_bounces; ++bounce) {
         Hit hit;
-        const bool found = bounce == 0 && first_known ? first != nullptr : scene_.intersect(ray, hit);
+        const bool found = bounce == 0 && first_known
+                               ? first != nullptr
+                               : timed_trace(counts, kind, 1, [&] { return scene_.intersect(ray, hit); });
         if (!found) return glm::vec3(0.0f);
         if (bounce == 0 && first_known) hit = *first;
         const Surface s = surface_at(scene_, ray, hit);
@@ -242,7 +247,8 @@ glm::vec3 CausticIntegrator::caustic(const Ray& camera_ray, const SampleKey& key
         if (!bs.valid || !bs.delta || max_component(bs.weight) <= 0.0f) return glm::vec3(0.0f);
         beta *= bs.weight;
         ray = Ray{spawn(s.point, s.normal, bs.wi), bs.wi, ray.time};
-        ++(glm::dot(bs.wi, s.normal) * glm::dot(wo, s.normal) >= 0.0f ? counts.reflected : counts.refracted);
+        kind = glm::dot(bs.wi, s.normal) * glm::dot(wo, s.normal) >= 0.0f ? RayKind::Reflected : RayKind::Refracted;
+        ++(kind == RayKind::Reflected ? counts.reflected : counts.refracted);
     }
     return glm::vec3(0.0f);
 }

@@ -1,6 +1,7 @@
 #include "integrator/cs1230_integrator.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -62,7 +63,9 @@ LightSample Cs1230Integrator::light_at(const Light& light, const glm::vec3& poin
 void Cs1230Integrator::radiance(const CameraBatch& batch, const Sampler&, glm::vec3 (&out)[kPacketSize],
                                 RayCounts& counts) const {
     Hit hits[kPacketSize];
-    const unsigned found = scene_.intersect(batch.rays, batch.active, hits) & batch.active;
+    const unsigned found = timed_trace(counts, RayKind::Camera, std::popcount(batch.active),
+                                       [&] { return scene_.intersect(batch.rays, batch.active, hits); }) &
+                           batch.active;
     NoShadingRecorder none;
     for (int l = 0; l < kPacketSize; ++l) {
         if (!((batch.active >> l) & 1)) continue;
@@ -75,13 +78,13 @@ void Cs1230Integrator::radiance(const CameraBatch& batch, const Sampler&, glm::v
 glm::vec3 Cs1230Integrator::radiance(const Ray& ray, const SampleKey&, const Sampler&, RayCounts& counts,
                                      ShadingRecorder& recorder) const {
     ++counts.camera;
-    return truncate_to_bytes(trace(ray, 0, counts, recorder));
+    return truncate_to_bytes(trace(RayKind::Camera, ray, 0, counts, recorder));
 }
 
 template <class Recorder>
-glm::vec3 Cs1230Integrator::trace(const Ray& ray, int depth, RayCounts& counts, Recorder& rec) const {
+glm::vec3 Cs1230Integrator::trace(RayKind kind, const Ray& ray, int depth, RayCounts& counts, Recorder& rec) const {
     Hit hit;
-    if (!scene_.intersect(ray, hit)) {
+    if (!timed_trace(counts, kind, 1, [&] { return scene_.intersect(ray, hit); })) {
         rec.miss(scene_.data.background);
         return scene_.data.background;
     }
@@ -161,7 +164,7 @@ glm::vec3 Cs1230Integrator::shade(const Ray& ray, const Hit& hit, int depth, Ray
             ++counts.shadow;
             const Ray shadow{s.point + kRayOffset * l, l};
             const float reach = std::isinf(ls.distance) ? kInfinity : glm::length(ls.position - shadow.origin);
-            if (scene_.occluded(shadow, reach)) {
+            if (timed_trace(counts, RayKind::Shadow, 1, [&] { return scene_.occluded(shadow, reach); })) {
                 if constexpr (Recorder::kRecords)
                     rec.light(LightTerm{li, ls, true, glm::dot(n, l), glm::vec3(0.0f), {}, {}});
                 continue;
@@ -187,7 +190,7 @@ glm::vec3 Cs1230Integrator::shade(const Ray& ray, const Hit& hit, int depth, Ray
             const Ray reflected{s.point + kRayOffset * r, r};
             ++counts.reflected;
             rec.secondary(SecondaryKind::Reflect, SecondaryRecord::Outcome::Traced, reflected, m.reflect);
-            const glm::vec3 c = trace(reflected, depth + 1, counts, rec);
+            const glm::vec3 c = trace(RayKind::Reflected, reflected, depth + 1, counts, rec);
             color += m.reflect * c;
             rec.secondary_color(c, m.reflect * c);
         }
@@ -222,7 +225,7 @@ glm::vec3 Cs1230Integrator::refraction(const Surface& s, const glm::vec3& dir, s
     const Ray out{leave_from + kRayOffset * leave_dir, leave_dir};
     ++counts.refracted;
     rec.secondary(SecondaryKind::Refract, SecondaryRecord::Outcome::Traced, out, m.transparent);
-    const glm::vec3 c = trace(out, depth + 1, counts, rec);
+    const glm::vec3 c = trace(RayKind::Refracted, out, depth + 1, counts, rec);
     rec.secondary_color(c, m.transparent * c);
     return m.transparent * c;
 }

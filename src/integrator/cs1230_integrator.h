@@ -44,7 +44,7 @@ public:
 
 private:
     template <class Recorder>
-    glm::vec3 trace(const Ray& ray, int depth, RayCounts& counts, Recorder& rec) const;
+    glm::vec3 trace(RayKind kind, const Ray& ray, int depth, RayCounts& counts, Recorder& rec) const;
     template <class Recorder>
     glm::vec3 shade(const Ray& ray, const Hit& hit, int depth, RayCounts& counts, Recorder& rec) const;
     Surface surface(const Ray& ray, const Hit& hit) const;

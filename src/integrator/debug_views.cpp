@@ -1,6 +1,7 @@
 #include "integrator/debug_views.h"
 
 #include <algorithm>
+#include <bit>
 
 #include "integrator/surface.h"
 
@@ -9,7 +10,8 @@ namespace whitted {
 void HitViewIntegrator::radiance(const CameraBatch& batch, const Sampler&, glm::vec3 (&out)[kPacketSize],
                                  RayCounts& counts) const {
     Hit hits[kPacketSize];
-    const unsigned found = scene_.intersect(batch.rays, batch.active, hits);
+    const unsigned found = timed_trace(counts, RayKind::Camera, std::popcount(batch.active),
+                                       [&] { return scene_.intersect(batch.rays, batch.active, hits); });
     for (int l = 0; l < kPacketSize; ++l) {
         if (!((batch.active >> l) & 1)) continue;
         ++counts.camera;

@@ -1,6 +1,7 @@
 #include "integrator/path_integrator.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <string_view>
 #include <tuple>
@@ -43,7 +44,8 @@ PathIntegrator::PathIntegrator(const Scene& scene, const Camera& camera, int max
 void PathIntegrator::radiance(const CameraBatch& batch, const Sampler& sampler, glm::vec3 (&out)[kPacketSize],
                               RayCounts& counts) const {
     Hit hits[kPacketSize];
-    const unsigned found = scene_.intersect(batch.rays, batch.active, hits);
+    const unsigned found = timed_trace(counts, RayKind::Camera, std::popcount(batch.active),
+                                       [&] { return scene_.intersect(batch.rays, batch.active, hits); });
     for (int l = 0; l < kPacketSize; ++l)
         if ((batch.active >> l) & 1)
             out[l] = radiance(batch.rays[l], batch.keys[l], sampler, counts, (found >> l) & 1 ? &hits[l] : nullptr, true);
@@ -79,7 +81,9 @@ glm::vec3 PathIntegrator::next_event(const Vertex& v, int bounce, const SampleKe
         const float pdf_light = prob * ls.pdf_area * d2 / cos_light;  // per unit solid angle at x
         const glm::vec3 start = spawn(x, v.s.normal, to);
         ++counts.shadow;
-        if (scene_.occluded(Ray{start, ls.point - start, v.time}, 1.0f - 1e-4f)) return glm::vec3(0.0f);
+        if (timed_trace(counts, RayKind::Shadow, 1,
+                        [&] { return scene_.occluded(Ray{start, ls.point - start, v.time}, 1.0f - 1e-4f); }))
+            return glm::vec3(0.0f);
         const float w = power_heuristic(pdf_light, v.bsdf.pdf(to));
         return scene_.material(std::uint32_t(pick.instance)).emit * f * (cos_x * w / pdf_light);
     }
@@ -94,9 +98,10 @@ glm::vec3 PathIntegrator::next_event(const Vertex& v, int bounce, const SampleKe
     if (max_component(f) <= 0.0f) return glm::vec3(0.0f);
     const glm::vec3 start = spawn(x, v.s.normal, ls.to_light);
     ++counts.shadow;
-    const bool blocked = std::isinf(ls.distance)
-                             ? scene_.occluded(Ray{start, ls.to_light, v.time}, Scene::kInfinity)
-                             : scene_.occluded(Ray{start, ls.position - start, v.time}, 1.0f - 1e-4f);
+    const bool blocked = timed_trace(counts, RayKind::Shadow, 1, [&] {
+        return std::isinf(ls.distance) ? scene_.occluded(Ray{start, ls.to_light, v.time}, Scene::kInfinity)
+                                       : scene_.occluded(Ray{start, ls.position - start, v.time}, 1.0f - 1e-4f);
+    });
     if (blocked) return glm::vec3(0.0f);
     return kPi * f * ls.intensity * (cos_x / prob);
 }
@@ -110,9 +115,12 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
     float bsdf_pdf = 0.0f;     // of the direction that led here (non-delta)
     bool scattered = false;    // a non-delta lobe was drawn at some vertex before
     glm::vec3 from(0.0f);
+    RayKind kind = RayKind::Camera;
     for (int bounce = 0;; ++bounce) {
         Hit hit;
-        const bool found = bounce == 0 && first_known ? first != nullptr : scene_.intersect(ray, hit);
+        const bool found = bounce == 0 && first_known
+                               ? first != nullptr
+                               : timed_trace(counts, kind, 1, [&] { return scene_.intersect(ray, hit); });
         if (bounce == 0 && first_known && first) hit = *first;
         if (!found) {
             radiance += beta * scene_.data.background;  // the uniform environment
@@ -161,7 +169,8 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
         bsdf_pdf = bs.pdf;
         from = s.point;
         ray = Ray{spawn(s.point, s.normal, bs.wi), bs.wi, ray.time};
-        ++(glm::dot(bs.wi, s.normal) * glm::dot(wo, s.normal) >= 0.0f ? counts.reflected : counts.refracted);
+        kind = glm::dot(bs.wi, s.normal) * glm::dot(wo, s.normal) >= 0.0f ? RayKind::Reflected : RayKind::Refracted;
+        ++(kind == RayKind::Reflected ? counts.reflected : counts.refracted);
 
         // Russian roulette after the third bounce: a path whose weight has fallen goes on with
         // probability equal to its weight, and carries 1/that when it does.

@@ -1,6 +1,7 @@
 #include "integrator/whitted_integrator.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -49,14 +50,15 @@ glm::vec3 WhittedIntegrator::radiance(const Ray& ray, const SampleKey& key, cons
     ++counts.camera;
     NoShadingRecorder none;
     RayDifferential rd;
-    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, none, camera_differential(ray, rd));
+    return trace(RayKind::Camera, ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, none,
+                 camera_differential(ray, rd));
 }
 
 glm::vec3 WhittedIntegrator::radiance(const Ray& ray, const SampleKey& key, const Sampler& sampler, RayCounts& counts,
                                       ShadingRecorder& recorder) const {
     ++counts.camera;
     RayDifferential rd;
-    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, recorder,
+    return trace(RayKind::Camera, ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, recorder,
                  camera_differential(ray, rd));
 }
 
@@ -64,7 +66,7 @@ glm::vec3 WhittedIntegrator::radiance(const Ray& ray, const SampleKey& key, cons
                                       AovRecorder& recorder) const {
     ++counts.camera;
     RayDifferential rd;
-    return trace(ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, recorder,
+    return trace(RayKind::Camera, ray, 0, glm::vec3(1.0f), SampleContext{sampler, key}, counts, recorder,
                  camera_differential(ray, rd));
 }
 
@@ -118,7 +120,9 @@ void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sample
     const SceneData& flat = scene_.data;
     const unsigned active = batch.active;
     Hit hits[kPacketSize];
-    const unsigned found = scene_.intersect(batch.rays, active, hits) & active;
+    const unsigned found =
+        timed_trace(counts, RayKind::Camera, std::popcount(active), [&] { return scene_.intersect(batch.rays, active, hits); }) &
+        active;
     ShadingPoint points[kPacketSize];
     for (int l = 0; l < kPacketSize; ++l)
         if ((found >> l) & 1) points[l] = shading_point(batch.rays[l], hits[l]);
@@ -143,7 +147,8 @@ void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sample
         }
         if (!want) continue;
         Hit blockers[kPacketSize];
-        const unsigned blocked = scene_.intersect(back, want, blockers, 1.0f);
+        const unsigned blocked = timed_trace(counts, RayKind::Shadow, std::popcount(want),
+                                             [&] { return scene_.intersect(back, want, blockers, 1.0f); });
         for (int l = 0; l < kPacketSize; ++l) {
             if (!((want >> l) & 1)) continue;
             shadows.query[li][l] = !((blocked >> l) & 1)                         ? ShadowQuery::Lit
@@ -163,10 +168,10 @@ void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sample
 
 // Inlined where a reflected or refracted ray is traced, as it was before rays carried a time.
 template <class Recorder>
-[[gnu::always_inline]] inline glm::vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx,
+[[gnu::always_inline]] inline glm::vec3 WhittedIntegrator::trace(RayKind kind, const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx,
                                    RayCounts& counts, Recorder& rec, const RayDifferential* rd) const {
     Hit hit;
-    if (!scene_.intersect(ray, hit)) {
+    if (!timed_trace(counts, kind, 1, [&] { return scene_.intersect(ray, hit); })) {
         rec.miss(scene_.data.background);
         return scene_.data.background;
     }
@@ -266,8 +271,11 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
         const glm::vec3 shadow = known == ShadowQuery::Lit                  ? glm::vec3(1.0f)
                                  : known == ShadowQuery::Blocked            ? glm::vec3(0.0f)
                                  : li < 32 && (conventions_.unshadowed_lights >> li) & 1u ? glm::vec3(1.0f)
-                                 : known == ShadowQuery::Glass || depth > 0 ? through_glass(ls, above, p.time)
-                                                                            : shadow_factor(light, ls, above, p.time);
+                                 : timed_trace(counts, RayKind::Shadow, 1, [&] {
+                                       return known == ShadowQuery::Glass || depth > 0
+                                                  ? through_glass(ls, above, p.time)
+                                                  : shadow_factor(light, ls, above, p.time);
+                                   });
         if (max_component(shadow) <= 0.0f) {
             if constexpr (Recorder::kRecords) rec.light(LightTerm{li, ls, true, n_dot_l, shadow, {}, {}});
             continue;
@@ -307,9 +315,9 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
                     RayDifferential next;  // none from here on if an auxiliary ray is totally reflected
                     const bool carried = refracted_differential(s.point, n, outside ? 1.0f : -1.0f, eta, diff->ray,
                                                                 diff->surface, next);
-                    c = trace(Ray{below, d, p.time}, depth + 1, w, ctx, counts, rec, carried ? &next : nullptr);
+                    c = trace(RayKind::Refracted, Ray{below, d, p.time}, depth + 1, w, ctx, counts, rec, carried ? &next : nullptr);
                 } else {
-                    c = trace(Ray{below, d, p.time}, depth + 1, w, ctx, counts, rec);
+                    c = trace(RayKind::Refracted, Ray{below, d, p.time}, depth + 1, w, ctx, counts, rec);
                 }
                 color += m.transparent * c;
                 rec.secondary_color(c, m.transparent * c);
@@ -340,9 +348,9 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
             if (diff) {
                 const RayDifferential next =
                     reflected_differential(s.point, n, outside ? 1.0f : -1.0f, diff->ray, diff->surface);
-                c = trace(Ray{above, d, p.time}, depth + 1, w, ctx, counts, rec, &next);
+                c = trace(RayKind::Reflected, Ray{above, d, p.time}, depth + 1, w, ctx, counts, rec, &next);
             } else {
-                c = trace(Ray{above, d, p.time}, depth + 1, w, ctx, counts, rec);
+                c = trace(RayKind::Reflected, Ray{above, d, p.time}, depth + 1, w, ctx, counts, rec);
             }
             color += reflect_weight * c;
             rec.secondary_color(c, reflect_weight * c);

@@ -96,8 +96,9 @@ private:
                        const Differentials* d = nullptr) const;
     inline glm::vec3 through_glass(const LightSample& ls, const glm::vec3& start, float time) const;
     glm::vec3 shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start, float time) const;
+    // A ray of `kind` (what --stats times it as) traced and shaded.
     template <class Recorder>
-    glm::vec3 trace(const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx, RayCounts& counts,
+    glm::vec3 trace(RayKind kind, const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx, RayCounts& counts,
                     Recorder& rec, const RayDifferential* rd = nullptr) const;
     // The direction of a reflected or refracted ray: the ideal one, or with gloss one drawn from
     // the lobe around it (false: it fell on the wrong side of the surface and carries nothing).

@@ -26,6 +26,7 @@ public:
         s0_ = std::clamp(job.sample_begin, 0, n);
         s1_ = job.sample_end < 0 ? n : std::clamp(job.sample_end, s0_, n);
         sample_.size_lights(plan.lights());
+        counts_.timing = job.time_rays;
     }
 
     bool render(const Tile& t, Film& film, ChannelFilm& aov) {
@@ -56,7 +57,8 @@ private:
         } else {
             // The first hit found here is the path's own (it is handed to the path tracer).
             Hit hit;
-            const bool found = integrator_.scene().intersect(ray, hit);
+            const bool found =
+                timed_trace(counts_, RayKind::Camera, 1, [&] { return integrator_.scene().intersect(ray, hit); });
             if (found) {
                 const Surface s = surface_at(integrator_.scene(), ray, hit);
                 sample_.hit = true;

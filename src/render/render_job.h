@@ -57,6 +57,8 @@ struct RenderJob {
     std::vector<std::string> aovs;
     int threads = 0;  // 0 = all hardware threads
     int tile_size = 32;
+    // Time a sample of each kind's traversals (RayCounts::timed) for --stats' rays per second.
+    bool time_rays = false;
     // Set by another thread (or a signal handler) to stop; checked at least once per tile row.
     const std::atomic<bool>* cancel = nullptr;
     // Called from worker threads as each tile is finished, its pixels in the film (thread-safe).

@@ -18,6 +18,7 @@ TileRenderer::TileRenderer(const Integrator& integrator, const RenderJob& job)
       timed_(!integrator.scene().motion.empty()) {
     const int n = sampler_.samples_per_pixel();
     s0_ = std::clamp(job.sampling.adaptive() ? 0 : job.sample_begin, 0, n);
+    counts_.timing = job.time_rays;
     s1_ = job.sampling.adaptive() || job.sample_end < 0 ? n : std::clamp(job.sample_end, s0_, n);
     const int ts = std::max(1, job.tile_size);
     const int apron = std::min(ts + 2, job.width);  // adaptive: the tile and a pixel around it
