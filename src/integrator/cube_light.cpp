@@ -10,11 +10,19 @@ namespace whitted {
 
 namespace {
 
-// The solid angle of the triangle (a, b, c) seen from the origin (Van Oosterom and Strackee 1983),
-// given the absolute value of its triple product.
-double triangle_solid_angle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double triple) {
-    const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
-    return 2.0 * std::atan2(triple, la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la);
+// The solid angle of the parallelogram (a, b, c, d) seen from the origin, as the triangles
+// (a, b, c) and (a, c, d), whose triple products have the same absolute value `triple`. Each
+// triangle's half-angle θ has tan θ = triple / x (Van Oosterom and Strackee 1983), θ in (0, π);
+// the parallelogram's is less than 2π, so θ1 + θ2 < π is one atan2 by the tangent's addition rule.
+// (Float points are less than 1e39 apart and more than 1e-45: x1·x2, of the sixth power of their
+// distances, neither overflows nor underflows a double.)
+double parallelogram_solid_angle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+                                 const glm::dvec3& d, double triple) {
+    const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c), ld = glm::length(d);
+    const double ac = glm::dot(a, c);
+    const double x1 = la * lb * lc + glm::dot(a, b) * lc + ac * lb + glm::dot(b, c) * la;
+    const double x2 = la * lc * ld + ac * ld + glm::dot(a, d) * lc + glm::dot(c, d) * la;
+    return 2.0 * std::atan2(triple * (x1 + x2), x1 * x2 - triple * triple);
 }
 
 }  // namespace
@@ -61,7 +69,7 @@ void CubeLight::face_probabilities(const glm::vec3& x, double (&p)[6], double (&
         const glm::dvec3 a = glm::dvec3(corner_[k]) - glm::dvec3(x), ea(edge_a_[k]), eb(edge_b_[k]);
         const glm::dvec3 b = a + ea, c = b + eb, d = a + eb;
         const double triple = h * double(area_[k]);
-        omega[k] = triangle_solid_angle(a, b, c, triple) + triangle_solid_angle(a, c, d, triple);
+        omega[k] = parallelogram_solid_angle(a, b, c, d, triple);
         omega_sum += omega[k];
         area_sum += area_[k];
     }
@@ -102,7 +110,8 @@ CubeLight::Sample CubeLight::sample(const glm::vec3& x, glm::vec2 u) const {
         below += p[j];
     }
     glm::vec2 st(std::clamp(float((double(u.x) - start) / p[k]), 0.0f, 0x1.fffffep-1f), u.y);
-    if (by_solid_angle(k, omega[k])) st = SphericalRectangle(x, corner_[k], edge_a_[k], edge_b_[k]).sample(st);
+    if (by_solid_angle(k, omega[k]))
+        st = SphericalRectangle(x, corner_[k], edge_a_[k], edge_b_[k], omega[k]).sample(st);
     const glm::vec3 point = corner_[k] + st.x * edge_a_[k] + st.y * edge_b_[k];
     return {point, normal_[k], density(x, point, k, p, omega)};
 }

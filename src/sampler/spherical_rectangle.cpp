@@ -11,6 +11,17 @@ constexpr double kTwoPi = 6.283185307179586476925;
 
 SphericalRectangle::SphericalRectangle(const glm::vec3& x, const glm::vec3& corner, const glm::vec3& ex,
                                        const glm::vec3& ey) {
+    set_up(x, corner, ex, ey, true);
+}
+
+SphericalRectangle::SphericalRectangle(const glm::vec3& x, const glm::vec3& corner, const glm::vec3& ex,
+                                       const glm::vec3& ey, double solid_angle) {
+    set_up(x, corner, ex, ey, false);
+    solid_angle_ = solid_angle;
+}
+
+void SphericalRectangle::set_up(const glm::vec3& x, const glm::vec3& corner, const glm::vec3& ex, const glm::vec3& ey,
+                                bool solid_angle) {
     const glm::dvec3 a(ex), b(ey);
     const double la = glm::length(a), lb = glm::length(b);
     const glm::dvec3 fx = a / la, fy = b / lb, fz = glm::cross(fx, fy);
@@ -31,11 +42,10 @@ SphericalRectangle::SphericalRectangle(const glm::vec3& x, const glm::vec3& corn
     const auto angle = [](const glm::dvec3& p, const glm::dvec3& q) {
         return std::acos(std::clamp(-glm::dot(p, q), -1.0, 1.0));
     };
-    const double g0 = angle(n0, n1), g1 = angle(n1, n2), g2 = angle(n2, n3), g3 = angle(n3, n0);
     b0_ = n0.z;
     b1_ = n2.z;
-    k_ = kTwoPi - g2 - g3;
-    solid_angle_ = g0 + g1 - k_;
+    k_ = kTwoPi - angle(n2, n3) - angle(n3, n0);
+    if (solid_angle) solid_angle_ = angle(n0, n1) + angle(n1, n2) - k_;
 }
 
 glm::vec2 SphericalRectangle::sample(glm::vec2 u) const {

@@ -15,6 +15,10 @@ public:
     // The rectangle corner + [0, 1]·ex + [0, 1]·ey (ex ⟂ ey, neither zero) seen from x, which is
     // not in its plane.
     SphericalRectangle(const glm::vec3& x, const glm::vec3& corner, const glm::vec3& ex, const glm::vec3& ey);
+    // The same with its solid angle from x known (computed otherwise, equal to rounding): two
+    // inverse cosines fewer.
+    SphericalRectangle(const glm::vec3& x, const glm::vec3& corner, const glm::vec3& ex, const glm::vec3& ey,
+                       double solid_angle);
 
     // The solid angle the rectangle subtends from x (steradians, in (0, 2π)).
     double solid_angle() const { return solid_angle_; }
@@ -23,6 +27,10 @@ public:
     glm::vec2 sample(glm::vec2 u) const;
 
 private:
+    // The frame, b0_, b1_ and k_; the inner angles at the edges x = x0 and y = y0 (for the solid
+    // angle) when asked.
+    void set_up(const glm::vec3& x, const glm::vec3& corner, const glm::vec3& ex, const glm::vec3& ey,
+                bool solid_angle);
     // The rectangle in a frame at x: x along ex, y along ey, z away from the rectangle, which lies
     // at z = z0 < 0 over [x0, x1] × [y0, y1].
     double x0_, x1_, y0_, y1_, z0_;

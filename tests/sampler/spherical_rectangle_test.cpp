@@ -79,6 +79,25 @@ TEST(SphericalRectangle, SolidAngleOffTheAxisIsTwoTriangles) {
     }
 }
 
+// Given its solid angle (the two triangles'), the rectangle maps the square as it does when it
+// finds the solid angle itself: the same points to float's rounding.
+TEST(SphericalRectangle, GivenItsSolidAngleItMapsTheSameWay) {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<float> pos(-1.5f, 1.5f), unit(0.0f, 1.0f);
+    for (int r = 0; r < 200; ++r) {
+        const Rect q = random_rect(rng);
+        const glm::vec3 x = q.corner + 0.5f * (q.ex + q.ey) + glm::vec3(pos(rng), pos(rng), pos(rng));
+        const SphericalRectangle plain(x, q.corner, q.ex, q.ey), given(x, q.corner, q.ex, q.ey, two_triangles(q, x));
+        EXPECT_NEAR(given.solid_angle(), plain.solid_angle(), 1e-9 * plain.solid_angle() + 1e-12);
+        for (int i = 0; i < 50; ++i) {
+            const glm::vec2 u(unit(rng), unit(rng));
+            const glm::vec2 a = plain.sample(u), b = given.sample(u);
+            EXPECT_NEAR(a.x, b.x, 1e-5f) << r << " u " << u.x << " " << u.y;
+            EXPECT_NEAR(a.y, b.y, 1e-5f) << r << " u " << u.x << " " << u.y;
+        }
+    }
+}
+
 // The samples land on the rectangle, in each of its 4 × 4 cells in proportion to the cell's solid
 // angle: a chi-square test with 15 degrees of freedom at p = 1e-4 for each rectangle.
 TEST(SphericalRectangle, SamplesFillTheCellsInProportionToTheirSolidAngles) {
