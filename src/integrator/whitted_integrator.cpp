@@ -130,7 +130,7 @@ void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sample
     // their origin and fan out over neighbouring points, as coherent as the camera rays were.
     // Exactly shadow_factor's first query, so the colours are those of one ray at a time. Lights
     // with a size are sampled per sample (no shared origin) and asked one by one.
-    PacketShadows shadows;
+    PacketQueries packet;
     const std::size_t packet_lights = std::min(flat.lights.size(), std::size_t(kPacketLights));
     for (std::size_t li = 0; li < packet_lights; ++li) {
         const Light& light = flat.lights[li];
@@ -151,17 +151,34 @@ void WhittedIntegrator::radiance(const CameraBatch& batch, const Sampler& sample
                                              [&] { return scene_.intersect(back, want, blockers, 1.0f); });
         for (int l = 0; l < kPacketSize; ++l) {
             if (!((want >> l) & 1)) continue;
-            shadows.query[li][l] = !((blocked >> l) & 1)                         ? ShadowQuery::Lit
+            packet.query[li][l] = !((blocked >> l) & 1)                         ? ShadowQuery::Lit
                                    : scene_.material(blockers[l]).is_transparent() ? ShadowQuery::Glass
                                                                                   : ShadowQuery::Blocked;
         }
     }
+    // The reflections off opaque mirrors, traced together: neighbouring pixels' reflections off one
+    // surface share the nodes they visit for a while. Exactly the ray shade_at traces first there:
+    // the ideal direction (no gloss, or one sample), weight 1 · reflect, within the sample's budget.
+    Ray mirrored[kPacketSize];
+    for (int l = 0; l < kPacketSize && max_depth_ > 0; ++l) {
+        if (!((found >> l) & 1)) continue;
+        const ShadingPoint& p = points[l];
+        const Material& m = *p.s.material;
+        if (m.is_transparent() || !(max_component(m.reflect) >= kMinWeight) || (m.gloss > 0.0f && !sampler.centred()))
+            continue;
+        mirrored[l] = Ray{p.above, p.dir - 2.0f * glm::dot(p.dir, p.n) * p.n, p.time};
+        packet.mirrored |= 1u << l;
+    }
+    if (packet.mirrored)
+        packet.mirror_found = timed_trace(counts, RayKind::Reflected, std::popcount(packet.mirrored), [&] {
+                                  return scene_.intersect(mirrored, packet.mirrored, packet.mirror_hit);
+                              }) & packet.mirrored;
     NoShadingRecorder none;
     for (int l = 0; l < kPacketSize; ++l) {
         if (!((active >> l) & 1)) continue;
         ++counts.camera;
         out[l] = (found >> l) & 1 ? shade_at(points[l], 0, glm::vec3(1.0f), SampleContext{sampler, batch.keys[l]},
-                                             counts, &shadows, l, none)
+                                             counts, &packet, l, none)
                                   : flat.background;
     }
 }
@@ -171,10 +188,20 @@ template <class Recorder>
 [[gnu::always_inline]] inline glm::vec3 WhittedIntegrator::trace(RayKind kind, const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx,
                                    RayCounts& counts, Recorder& rec, const RayDifferential* rd) const {
     Hit hit;
-    if (!timed_trace(counts, kind, 1, [&] { return scene_.intersect(ray, hit); })) {
+    const bool found = timed_trace(counts, kind, 1, [&] { return scene_.intersect(ray, hit); });
+    return shade_hit(ray, found ? &hit : nullptr, depth, weight, ctx, counts, rec, rd);
+}
+
+template <class Recorder>
+[[gnu::always_inline]] inline glm::vec3 WhittedIntegrator::shade_hit(const Ray& ray, const Hit* found, int depth,
+                                                                     const glm::vec3& weight, const SampleContext& ctx,
+                                                                     RayCounts& counts, Recorder& rec,
+                                                                     const RayDifferential* rd) const {
+    if (!found) {
         rec.miss(scene_.data.background);
         return scene_.data.background;
     }
+    const Hit& hit = *found;
     // The inspector's report gives every hit its texture coordinates, textured or not.
     auto record_hit = [&](const ShadingPoint& p) {
         if constexpr (Recorder::kRecords) {
@@ -236,7 +263,7 @@ bool WhittedIntegrator::secondary_direction(const glm::vec3& ideal, const glm::v
 
 template <class Recorder>
 glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight,
-                                      const SampleContext& ctx, RayCounts& counts, const PacketShadows* shadows,
+                                      const SampleContext& ctx, RayCounts& counts, const PacketQueries* packet,
                                       int lane, Recorder& rec, const Differentials* diff) const {
     const SceneData& flat = scene_.data;
     const Surface& s = p.s;
@@ -254,7 +281,7 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
     const Light* const lights = flat.lights.data();
     const std::size_t light_count = flat.lights.size();
     const bool centred = ctx.sampler.centred();
-    const std::size_t packet_lights = shadows ? std::min(light_count, kPacketLights) : 0;  // known for lights below
+    const std::size_t packet_lights = packet ? std::min(light_count, kPacketLights) : 0;  // known for lights below
     for (std::size_t li = 0; li < light_count; ++li) {
         const Light& light = lights[li];
         const LightSample ls = light_sample(light, li, s.point, depth, centred, ctx);
@@ -267,7 +294,7 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
         // Camera-ray hits ask from the light first (so that a packet's shadow rays can share an
         // origin, and one by one they get the same answer); deeper hits, whose shadow rays are
         // not traced in packets, go straight to the query from the point, faster for single rays.
-        const ShadowQuery known = li < packet_lights ? shadows->query[li][lane] : ShadowQuery::Unknown;
+        const ShadowQuery known = li < packet_lights ? packet->query[li][lane] : ShadowQuery::Unknown;
         const glm::vec3 shadow = known == ShadowQuery::Lit                  ? glm::vec3(1.0f)
                                  : known == ShadowQuery::Blocked            ? glm::vec3(0.0f)
                                  : li < 32 && (conventions_.unshadowed_lights >> li) & 1u ? glm::vec3(1.0f)
@@ -349,6 +376,9 @@ glm::vec3 WhittedIntegrator::shade_at(const ShadingPoint& p, int depth, const gl
                 const RayDifferential next =
                     reflected_differential(s.point, n, outside ? 1.0f : -1.0f, diff->ray, diff->surface);
                 c = trace(RayKind::Reflected, Ray{above, d, p.time}, depth + 1, w, ctx, counts, rec, &next);
+            } else if (packet && (packet->mirrored >> lane) & 1) {  // traced with the packet
+                c = shade_hit(Ray{above, d, p.time}, (packet->mirror_found >> lane) & 1 ? &packet->mirror_hit[lane] : nullptr,
+                              depth + 1, w, ctx, counts, rec, nullptr);
             } else {
                 c = trace(RayKind::Reflected, Ray{above, d, p.time}, depth + 1, w, ctx, counts, rec);
             }

@@ -69,11 +69,15 @@ private:
         // Takes one of the sample's secondary rays, if any is left.
         bool take_ray() const { return rays_left > 0 && (--rays_left, true); }
     };
-    // What a packet's shadow rays found for each lane and light (the first kPacketLights lights).
+    // What a packet's rays found for its camera hits, lane by lane: the shadow queries toward the
+    // first kPacketLights lights, and an opaque mirror's reflection (the first secondary ray its
+    // shading traces) with the hit it found.
     enum class ShadowQuery : unsigned char { Unknown, Lit, Blocked, Glass };
     static constexpr std::size_t kPacketLights = 8;
-    struct PacketShadows {
+    struct PacketQueries {
         ShadowQuery query[kPacketLights][kPacketSize] = {};
+        unsigned mirrored = 0, mirror_found = 0;  // the lanes whose reflection was traced, and hit
+        Hit mirror_hit[kPacketSize];
     };
     // A ray's differentials and, once it has hit, the surface's there.
     struct Differentials {
@@ -92,7 +96,7 @@ private:
                                     bool centred, const SampleContext& ctx) const;
     template <class Recorder>
     glm::vec3 shade_at(const ShadingPoint& p, int depth, const glm::vec3& weight, const SampleContext& ctx,
-                       RayCounts& counts, const PacketShadows* shadows, int lane, Recorder& rec,
+                       RayCounts& counts, const PacketQueries* packet, int lane, Recorder& rec,
                        const Differentials* d = nullptr) const;
     inline glm::vec3 through_glass(const LightSample& ls, const glm::vec3& start, float time) const;
     glm::vec3 shadow_factor(const Light& light, const LightSample& ls, const glm::vec3& start, float time) const;
@@ -100,6 +104,10 @@ private:
     template <class Recorder>
     glm::vec3 trace(RayKind kind, const Ray& ray, int depth, const glm::vec3& weight, const SampleContext& ctx, RayCounts& counts,
                     Recorder& rec, const RayDifferential* rd = nullptr) const;
+    // The colour a ray brings back from its hit (null: it hit nothing).
+    template <class Recorder>
+    glm::vec3 shade_hit(const Ray& ray, const Hit* hit, int depth, const glm::vec3& weight, const SampleContext& ctx,
+                        RayCounts& counts, Recorder& rec, const RayDifferential* rd) const;
     // The direction of a reflected or refracted ray: the ideal one, or with gloss one drawn from
     // the lobe around it (false: it fell on the wrong side of the surface and carries nothing).
     inline bool secondary_direction(const glm::vec3& ideal, const glm::vec3& n, bool above, float gloss,

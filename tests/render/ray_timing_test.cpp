@@ -54,19 +54,21 @@ TEST(RayTiming, ChangesNoPixel) {
     }
 }
 
-// Whitted: every reflected and refracted ray counted is traced once, through trace(), so the
-// timed calls are the counts and one in eight of them was timed (the 1st, 9th, ...).
+// Whitted: every refracted ray counted is traced once, on its own, so the timed calls are the
+// count and one in eight of them was timed (the 1st, 9th, ...). Reflected rays too, but the
+// camera hits' opaque mirrors trace theirs together, a call for several.
 TEST(RayTiming, WhittedTimesOneSecondaryRayInEight) {
     Image image(96, 72);
     const RenderStats s = render(showcase(), small_job(RenderMode::Whitted, true), image);
     const RayCounts& c = s.rays;
     ASSERT_GT(c.reflected, 0u);
     ASSERT_GT(c.refracted, 0u);
-    EXPECT_EQ(timed_calls(c, RayKind::Reflected), c.reflected);
     EXPECT_EQ(timed_calls(c, RayKind::Refracted), c.refracted);
     const std::uint64_t n = RayCounts::kTimeEvery;
-    EXPECT_EQ(c.timed[int(RayKind::Reflected)].rays, (c.reflected + n - 1) / n);
     EXPECT_EQ(c.timed[int(RayKind::Refracted)].rays, (c.refracted + n - 1) / n);
+    EXPECT_GT(timed_calls(c, RayKind::Reflected), 0u);
+    EXPECT_LT(timed_calls(c, RayKind::Reflected), c.reflected);
+    EXPECT_LE(c.timed[int(RayKind::Reflected)].rays, (timed_calls(c, RayKind::Reflected) + n - 1) / n * kPacketSize);
     // Camera rays go in packets: a call carries up to kPacketSize of them.
     const RayCounts::Timed& cam = c.timed[int(RayKind::Camera)];
     EXPECT_GT(cam.rays, 0u);
