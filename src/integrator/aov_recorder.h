@@ -94,6 +94,7 @@ public:
     }
     void done(const glm::vec3&) { --open_; }
     static constexpr bool kRecords = true;
+    static constexpr bool kReadsUv = false;
 
 private:
     AovSample& out_;

@@ -73,6 +73,7 @@ struct NoShadingRecorder {
     void secondary_color(const glm::vec3&, const glm::vec3&) {}
     void done(const glm::vec3&) {}
     static constexpr bool kRecords = false;
+    static constexpr bool kReadsUv = false;  // whether hit() reads the surface's uv
 };
 
 // The recorder the inspector uses: one ShadeNode per hit, nodes[0] the camera ray's (if it hit),
@@ -112,6 +113,7 @@ public:
     void secondary_color(const glm::vec3& color, const glm::vec3& contribution);
     void done(const glm::vec3& color);
     static constexpr bool kRecords = true;
+    static constexpr bool kReadsUv = true;  // the report gives every hit its uv, textured or not
 
 private:
     std::vector<int> open_;  // the hits being shaded, innermost last (-1: one past the bound, not kept)

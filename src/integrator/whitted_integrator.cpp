@@ -206,7 +206,7 @@ template <class Recorder>
     auto record_hit = [&](const ShadingPoint& p) {
         if constexpr (Recorder::kRecords) {
             Surface s = p.s;
-            if (s.material->texture < 0) s.uv = surface_uv(scene_, ray, hit);
+            if (Recorder::kReadsUv && s.material->texture < 0) s.uv = surface_uv(scene_, ray, hit);
             rec.hit(ray, hit, s, p.n, p.outside, depth);
         }
     };
