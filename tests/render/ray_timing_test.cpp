@@ -55,9 +55,9 @@ TEST(RayTiming, ChangesNoPixel) {
 }
 
 // Whitted: every refracted ray counted is traced once, on its own, so the timed calls are the
-// count and one in eight of them was timed (the 1st, 9th, ...). Reflected rays too, but the
+// count and one in kTimeEvery of them was timed (the 1st, 33rd, ...). Reflected rays too, but the
 // camera hits' opaque mirrors trace theirs together, a call for several.
-TEST(RayTiming, WhittedTimesOneSecondaryRayInEight) {
+TEST(RayTiming, WhittedTimesOneSecondaryRayInEveryKTimeEvery) {
     Image image(96, 72);
     const RenderStats s = render(showcase(), small_job(RenderMode::Whitted, true), image);
     const RayCounts& c = s.rays;
