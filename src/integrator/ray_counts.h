@@ -17,7 +17,7 @@ struct RayCounts {
     struct Timed {
         std::uint64_t calls = 0, rays = 0, nanos = 0;
     };
-    // Two clock reads (about 50 ns) per 32 traversals: a percent or two of a render's time.
+    // Two clock reads (about 50 ns) per 32 traversals: under 2 ns a traversal, against 15-100 ns.
     static constexpr std::uint64_t kTimeEvery = 32;
     bool timing = false;
     Timed timed[kRayKinds];
