@@ -32,6 +32,8 @@ Bsdf::Bsdf(const Material& m, const glm::vec3& diffuse, const glm::vec3& outward
     weight_[1] = s * m.specular;
     weight_[2] = s * m.reflect;
     weight_[3] = s * m.transparent;
+    specular_ = weight_[1] != glm::vec3(0.0f);
+    transparent_ = weight_[3] != glm::vec3(0.0f);
     const bool outside = glm::dot(outward, wo) >= 0.0f;
     n_ = outside ? outward : -outward;
     eta_ = outside ? 1.0f / m.ior : m.ior;
@@ -40,7 +42,7 @@ Bsdf::Bsdf(const Material& m, const glm::vec3& diffuse, const glm::vec3& outward
     const float cos_i = glm::dot(n_, wo);
     const float k = 1.0f - eta_ * eta_ * (1.0f - cos_i * cos_i);
     tir_ = k < 0.0f;
-    refracted_ = tir_ ? mirror_ : glm::normalize(-eta_ * wo + (eta_ * cos_i - std::sqrt(std::max(k, 0.0f))) * n_);
+    refracted_ = tir_ || !transparent_ ? mirror_ : glm::normalize(-eta_ * wo + (eta_ * cos_i - std::sqrt(std::max(k, 0.0f))) * n_);
     float total = 0.0f;
     for (int l = 0; l < 4; ++l) total += p_[l] = std::max(0.0f, mean(weight_[l]));
     for (float& p : p_) p = total > 0.0f ? p / total : 0.0f;
@@ -63,15 +65,16 @@ glm::vec3 Bsdf::f(const glm::vec3& wi) const {
     glm::vec3 f(0.0f);
     if (glm::dot(n_, wi) > 0.0f) {
         f += weight_[0] / kPi;
+        // (A surface without the lobe skips its power: most of a diffuse scene's f.)
         const float c = glm::dot(mirror_, wi);
-        if (c > 0.0f) f += weight_[1] * ((shine_ + 2.0f) / (2.0f * kPi) * std::pow(c, shine_));
+        if (c > 0.0f && specular_) f += weight_[1] * ((shine_ + 2.0f) / (2.0f * kPi) * std::pow(c, shine_));
     }
     // A glossy lobe's f is its weight × its density / |cos θi| on the side it lights: a sample drawn
     // from it there carries the weight; one that falls on the other side carries nothing (§9.1).
     if (gloss_ > 0.0f && cos_i > 0.0f) {
         const bool above = glm::dot(n_, wi) > 0.0f;
         if (above) f += weight_[2] * (lobe_pdf(2, wi) / cos_i);
-        if (above == tir_) f += weight_[3] * (lobe_pdf(3, wi) / cos_i);
+        if (above == tir_ && transparent_) f += weight_[3] * (lobe_pdf(3, wi) / cos_i);
     }
     return f;
 }

@@ -50,8 +50,9 @@ private:
     float p_[4];           // the probability of sampling each lobe
     float shine_, gloss_, eta_;
     glm::vec3 n_, mirror_;
-    glm::vec3 refracted_;  // the refraction lobe's ideal direction (the mirror one on total internal reflection)
+    glm::vec3 refracted_;  // the refraction lobe's ideal direction (the mirror one on total internal reflection or without the lobe)
     bool tir_;
+    bool specular_, transparent_;  // those lobes' weights are not zero (else their terms are skipped)
 };
 
 }  // namespace whitted

@@ -53,11 +53,9 @@ void PathIntegrator::radiance(const CameraBatch& batch, const Sampler& sampler, 
 
 // Light arriving at vertex v from one light chosen by power, times the BSDF and the cosine, divided
 // by the densities (and weighted against BSDF sampling for area lights).
-glm::vec3 PathIntegrator::next_event(const Vertex& v, int bounce, const SampleKey& key, const Sampler& sampler,
-                                     RayCounts& counts) const {
+glm::vec3 PathIntegrator::next_event(const Vertex& v, int bounce, glm::vec2 choice, glm::vec2 u, const SampleKey& key,
+                                     const Sampler& sampler, RayCounts& counts) const {
     if (lights_.empty() || !v.bsdf.has_non_delta()) return glm::vec3(0.0f);
-    const glm::vec2 choice = sampler.get2d(key, dimension::path(bounce, dimension::kPathChoice));
-    const glm::vec2 u = sampler.get2d(key, dimension::path(bounce, dimension::kPathLightPoint));
     float prob;
     const PathLight& pick = lights_.choose(choice.x, prob);
     const glm::vec3 x = v.s.point;
@@ -158,10 +156,18 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
 
         const Vertex v{s, Bsdf(m, s.diffuse, s.normal, wo), wo, ray.time};
         if (v.bsdf.black()) break;
-        radiance += beta * next_event(v, bounce, key, sampler, counts);
+        // The vertex's four dimensions at once. The choice's first coordinate picks the light, its
+        // second plays Russian roulette below.
+        const std::uint32_t dims[4] = {dimension::path(bounce, dimension::kPathChoice),
+                                       dimension::path(bounce, dimension::kPathLightPoint),
+                                       dimension::path(bounce, dimension::kPathLobe),
+                                       dimension::path(bounce, dimension::kPathDirection)};
+        glm::vec2 u[4];
+        sampler.get2d(key, dims, u);
+        const glm::vec2 choice = u[0], lobe = u[2];
+        radiance += beta * next_event(v, bounce, choice, u[1], key, sampler, counts);
 
-        const glm::vec2 lobe = sampler.get2d(key, dimension::path(bounce, dimension::kPathLobe));
-        const BsdfSample bs = v.bsdf.sample(lobe.x, sampler.get2d(key, dimension::path(bounce, dimension::kPathDirection)));
+        const BsdfSample bs = v.bsdf.sample(lobe.x, u[3]);
         if (!bs.valid || max_component(bs.weight) <= 0.0f) break;
         beta *= bs.weight;
         delta_before = bs.delta;
@@ -177,7 +183,7 @@ glm::vec3 PathIntegrator::radiance(const Ray& camera_ray, const SampleKey& key, 
         if (bounce >= 2) {
             const float q = max_component(beta);
             if (q < 1.0f) {
-                if (sampler.get2d(key, dimension::path(bounce, dimension::kPathChoice)).y >= q) break;
+                if (choice.y >= q) break;
                 beta /= q;
             }
         }

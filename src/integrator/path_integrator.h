@@ -34,8 +34,10 @@ public:
 
 private:
     struct Vertex;
-    glm::vec3 next_event(const Vertex& v, int bounce, const SampleKey& key, const Sampler& sampler,
-                         RayCounts& counts) const;
+    // `choice` and `u`: the vertex's light-choice dimension (its first coordinate picks the light)
+    // and the point on the light's.
+    glm::vec3 next_event(const Vertex& v, int bounce, glm::vec2 choice, glm::vec2 u, const SampleKey& key,
+                         const Sampler& sampler, RayCounts& counts) const;
 
     int max_bounces_;
     PathLights lights_;

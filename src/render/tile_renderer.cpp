@@ -48,8 +48,9 @@ Ray camera_sample_ray(const Camera& camera, const Sampler& sampler, int width, i
     }
     const SampleKey key{std::uint32_t(x), std::uint32_t(y), index};
     const glm::vec2 at = sampler.pixel_offset(key);
-    Ray ray =
-        camera.generate_ray(width, height, float(x) + at.x, float(y) + at.y, sampler.get2d(key, dimension::kLens));
+    // A pinhole reads no lens dimension (its rays ignore it).
+    const glm::vec2 lens = camera.is_pinhole() ? glm::vec2(0.5f) : sampler.get2d(key, dimension::kLens);
+    Ray ray = camera.generate_ray(width, height, float(x) + at.x, float(y) + at.y, lens);
     if (timed) ray.time = sampler.get2d(key, dimension::kTime).x;
     return ray;
 }

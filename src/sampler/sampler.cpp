@@ -3,6 +3,11 @@
 #include <algorithm>
 #include <array>
 
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#include <immintrin.h>
+#define WHITTED_SAMPLER_AVX2 1
+#endif
+
 namespace whitted {
 namespace {
 
@@ -86,6 +91,67 @@ glm::vec2 sobol_2d(std::uint32_t index, std::uint64_t h) {
             to_unit(reverse_bits(owen_hash(sobol_dim1_reversed(j), std::uint32_t(h2))))};
 }
 
+#ifdef WHITTED_SAMPLER_AVX2
+// sobol_2d for four seeds at once: lanes 2d and 2d + 1 hold dimension d's x and y. The same
+// operations on the same bits, with the second dimension's matrix written without tables: D is
+// Pascal's triangle mod 2, and reverse(D · reverse(v)) is reverse(zeta(v)), where zeta xors into
+// each bit position the bits of the positions whose index is a subset of its own (one shift per
+// index bit).
+struct Avx2Sobol {
+    [[gnu::target("avx2")]] static __m256i reverse(__m256i v) {
+        const __m256i bytes = _mm256_setr_epi8(3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12,
+                                               3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12);
+        // A nibble reversed, and reversed and moved up.
+        const __m256i low = _mm256_setr_epi8(0, 8, 4, 12, 2, 10, 6, 14, 1, 9, 5, 13, 3, 11, 7, 15,
+                                             0, 8, 4, 12, 2, 10, 6, 14, 1, 9, 5, 13, 3, 11, 7, 15);
+        const __m256i high = _mm256_slli_epi16(low, 4);
+        const __m256i nibble = _mm256_set1_epi8(0x0f);
+        v = _mm256_shuffle_epi8(v, bytes);
+        const __m256i lo = _mm256_and_si256(v, nibble), hi = _mm256_and_si256(_mm256_srli_epi16(v, 4), nibble);
+        return _mm256_or_si256(_mm256_shuffle_epi8(high, lo), _mm256_shuffle_epi8(low, hi));
+    }
+    [[gnu::target("avx2")]] static __m256i mul(__m256i v, std::uint32_t c) {
+        return _mm256_mullo_epi32(v, _mm256_set1_epi32(int(c)));
+    }
+    [[gnu::target("avx2")]] static __m256i owen_hash(__m256i v, __m256i seed) {
+        v = _mm256_xor_si256(v, mul(v, 0x3d20adeau));
+        v = _mm256_add_epi32(v, seed);
+        v = _mm256_mullo_epi32(v, _mm256_or_si256(_mm256_srli_epi32(seed, 16), _mm256_set1_epi32(1)));
+        v = _mm256_xor_si256(v, mul(v, 0x05526c56u));
+        return _mm256_xor_si256(v, mul(v, 0x53a22864u));
+    }
+    [[gnu::target("avx2")]] static __m256i zeta(__m256i v) {
+        v = _mm256_xor_si256(v, _mm256_slli_epi32(_mm256_and_si256(v, _mm256_set1_epi32(0x55555555)), 1));
+        v = _mm256_xor_si256(v, _mm256_slli_epi32(_mm256_and_si256(v, _mm256_set1_epi32(0x33333333)), 2));
+        v = _mm256_xor_si256(v, _mm256_slli_epi32(_mm256_and_si256(v, _mm256_set1_epi32(0x0f0f0f0f)), 4));
+        v = _mm256_xor_si256(v, _mm256_slli_epi32(_mm256_and_si256(v, _mm256_set1_epi32(0x00ff00ff)), 8));
+        return _mm256_xor_si256(v, _mm256_slli_epi32(v, 16));
+    }
+    // to_unit: float(v) rounded once, as the two exact halves summed (16 bits each).
+    [[gnu::target("avx2")]] static __m256 to_unit(__m256i v) {
+        const __m256 hi = _mm256_cvtepi32_ps(_mm256_srli_epi32(v, 16));
+        const __m256 lo = _mm256_cvtepi32_ps(_mm256_and_si256(v, _mm256_set1_epi32(0xffff)));
+        const __m256 f = _mm256_add_ps(_mm256_mul_ps(hi, _mm256_set1_ps(65536.0f)), lo);
+        return _mm256_min_ps(_mm256_mul_ps(f, _mm256_set1_ps(0x1p-32f)), _mm256_set1_ps(0x1.fffffep-1f));
+    }
+    [[gnu::target("avx2")]] static void run(std::uint32_t index, const std::uint64_t (&h)[4], glm::vec2 (&out)[4]) {
+        alignas(32) std::uint32_t shuffle[8], scramble[8];
+        for (int d = 0; d < 4; ++d) {
+            shuffle[2 * d] = shuffle[2 * d + 1] = std::uint32_t(h[d]);
+            scramble[2 * d] = std::uint32_t(h[d] >> 32);
+            scramble[2 * d + 1] = std::uint32_t(mix64(h[d]));
+        }
+        const __m256i j = owen_hash(_mm256_set1_epi32(int(reverse_bits(index))),
+                                    _mm256_load_si256(reinterpret_cast<const __m256i*>(shuffle)));
+        const __m256i v = reverse(_mm256_blend_epi32(j, zeta(j), 0xaa));  // x: reverse(j); y: D applied
+        const __m256i s = owen_hash(v, _mm256_load_si256(reinterpret_cast<const __m256i*>(scramble)));
+        alignas(32) float f[8];
+        _mm256_store_ps(f, to_unit(reverse(s)));
+        for (int d = 0; d < 4; ++d) out[d] = {f[2 * d], f[2 * d + 1]};
+    }
+};
+#endif
+
 }  // namespace
 
 Sampler::Sampler(int aa, int spp, std::uint32_t seed)
@@ -103,6 +169,19 @@ glm::vec2 Sampler::pixel_offset(const SampleKey& key) const {
 glm::vec2 Sampler::get2d(const SampleKey& key, std::uint32_t dim) const {
     if (centred()) return glm::vec2(0.5f);
     return sobol_2d(key.index, hash(key, dim, seed_));
+}
+
+void Sampler::get2d(const SampleKey& key, const std::uint32_t (&dims)[4], glm::vec2 (&out)[4]) const {
+#ifdef WHITTED_SAMPLER_AVX2
+    static const bool avx2 = __builtin_cpu_supports("avx2");
+    if (avx2 && !centred()) {
+        const std::uint64_t h[4] = {hash(key, dims[0], seed_), hash(key, dims[1], seed_), hash(key, dims[2], seed_),
+                                    hash(key, dims[3], seed_)};
+        Avx2Sobol::run(key.index, h, out);
+        return;
+    }
+#endif
+    for (int d = 0; d < 4; ++d) out[d] = get2d(key, dims[d]);
 }
 
 }  // namespace whitted

@@ -60,6 +60,9 @@ public:
     glm::vec2 pixel_offset(const SampleKey& key) const;
     // The value of dimension `dim` for sample `key`, in [0, 1)².
     glm::vec2 get2d(const SampleKey& key, std::uint32_t dim) const;
+    // Four dimensions of one sample: the values get2d gives each, found side by side (eight
+    // coordinates in one AVX2 register where the CPU has it), for a path vertex's four.
+    void get2d(const SampleKey& key, const std::uint32_t (&dims)[4], glm::vec2 (&out)[4]) const;
 
 private:
     int aa_, spp_;
