@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "data/scene_data.h"
+#include "sampler/spherical_rectangle.h"
 
 namespace whitted {
 
@@ -59,6 +60,9 @@ private:
     glm::vec3 centre_[6], normal_[6];
     float area_[6];
     bool rectangle_[6];  // edge_a ⟂ edge_b in the world (a face the matrix does not shear)
+    SphericalRectangle::Frame frame_[6];  // of the rectangles
+    // The same in double, converted once (the solid angles are found in double).
+    glm::dvec3 corner_d_[6], edge_a_d_[6], edge_b_d_[6], centre_d_[6], normal_d_[6];
 };
 
 }  // namespace whitted
