@@ -37,7 +37,7 @@
 
 namespace whitted {
 
-class Scene;
+struct Scene;  // accel/scene.h
 
 struct EmittedPhoton {
     Ray ray;                  // unit direction
