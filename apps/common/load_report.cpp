@@ -47,19 +47,23 @@ void print_stats(const LoadStats& ls, const RenderStats& rs, int samples_per_pix
     std::fprintf(stderr,
                  "dialect %s\n"
                  "objects %zu, lights %zu, textures %zu; %d samples per pixel in %d passes\n"
-                 "parse %.3fs, flatten %.3fs, textures %.3fs, meshes %.3fs, build %.3fs, render %.3fs (%d threads)\n"
+                 "parse %.3fs, flatten %.3fs, textures %.3fs, meshes %.3fs, build %.3fs, render %.3fs (%d threads)\n",
+                 dialect_name(ls.dialect), ls.objects, ls.lights, ls.textures, samples_per_pixel, passes, ls.parse_seconds,
+                 ls.flatten_seconds, ls.texture_seconds, ls.mesh_seconds, ls.build_seconds, rs.seconds, rs.threads);
+    print_rays(rs.rays, rs.seconds);
+}
+
+void print_rays(const RayCounts& rays, double seconds) {
+    std::fprintf(stderr,
                  "rays: camera %llu, reflected %llu, refracted %llu, shadow %llu; %.2f Mrays/s\n"
                  "traversal Mrays/s per thread (1 in %llu timed): camera %.2f, reflected %.2f, refracted %.2f, shadow %.2f\n"
                  "samples rejected (not finite, counted as black): %llu\n",
-                 dialect_name(ls.dialect), ls.objects, ls.lights, ls.textures, samples_per_pixel, passes, ls.parse_seconds,
-                 ls.flatten_seconds, ls.texture_seconds, ls.mesh_seconds, ls.build_seconds, rs.seconds, rs.threads,
-                 (unsigned long long)rs.rays.camera, (unsigned long long)rs.rays.reflected,
-                 (unsigned long long)rs.rays.refracted, (unsigned long long)rs.rays.shadow,
-                 rs.seconds > 0 ? double(rs.rays.total()) / rs.seconds * 1e-6 : 0.0,
-                 (unsigned long long)RayCounts::kTimeEvery, rs.rays.rays_per_second(RayKind::Camera) * 1e-6,
-                 rs.rays.rays_per_second(RayKind::Reflected) * 1e-6, rs.rays.rays_per_second(RayKind::Refracted) * 1e-6,
-                 rs.rays.rays_per_second(RayKind::Shadow) * 1e-6,
-                 (unsigned long long)rs.rays.rejected);
+                 (unsigned long long)rays.camera, (unsigned long long)rays.reflected,
+                 (unsigned long long)rays.refracted, (unsigned long long)rays.shadow,
+                 seconds > 0 ? double(rays.total()) / seconds * 1e-6 : 0.0, (unsigned long long)RayCounts::kTimeEvery,
+                 rays.rays_per_second(RayKind::Camera) * 1e-6, rays.rays_per_second(RayKind::Reflected) * 1e-6,
+                 rays.rays_per_second(RayKind::Refracted) * 1e-6, rays.rays_per_second(RayKind::Shadow) * 1e-6,
+                 (unsigned long long)rays.rejected);
 }
 
 }  // namespace whitted::cli

@@ -14,5 +14,8 @@ int report_load(const LoadResult& loaded, const RenderOptions& o, const char* pr
 
 // The --stats lines of a load and a render (samples per pixel reached, in how many passes).
 void print_stats(const LoadStats& ls, const RenderStats& rs, int samples_per_pixel, int passes = 1);
+// Its lines of the rays traced in `seconds`: how many of each kind, and each kind's rate through
+// the acceleration structure (whitted-mpi's for all its ranks).
+void print_rays(const RayCounts& rays, double seconds);
 
 }  // namespace whitted::cli

@@ -35,7 +35,7 @@ int render_image(const ImageJob& job, const SharedScene& shared) {
     RankSetup s;
     s.job = render_job(o, nullptr);
     s.job.tile_size = m.tile_size;
-    s.job.time_rays = false;  // rank 0's --stats has no per-kind rates (ranks send their totals only)
+    s.job.time_rays = o.stats;  // each rank times its traversals; rank 0 prints all ranks' rates
     const auto integrator =
         make_integrator(*shared.loaded.scene, s.job.camera_for(*shared.loaded.scene), s.job.integrator);
     s.integrator = integrator.get();

@@ -13,6 +13,7 @@
 #include <list>
 #include <thread>
 
+#include "load_report.h"
 #include "progress.h"
 #include "protocol.h"
 #include "ranks.h"
@@ -123,6 +124,7 @@ private:
     std::vector<int> parked;      // requests kept for want of work (answered when a pass begins or the job ends)
     std::vector<bool> bye;
     std::vector<WorkerStats> stats;
+    RayCounts local_rays;  // rank 0's
     bool job_over = false;
     // The pass under way.
     int pass = 0;
@@ -287,6 +289,7 @@ RenderStats RankPasses::render(const Integrator& integrator, const RenderJob& pa
             if (share->pass == pass)
                 for (int t : share->tiles) merge_tile(0, t, share->film);
             progress.add(0, 0, share->rays);
+            local_rays += share->counts;
         }
         int flag = 0;
         MPI_Status st;
@@ -364,6 +367,10 @@ void RankPasses::print_stats(double wall, int passes_tiles) const {
                      w.threads, w.tiles, progress.tiles_of(r), w.busy, std::max(0.0, w.wall - w.busy),
                      (unsigned long long)w.bytes_sent);
     }
+    RayCounts all = local_rays;
+    for (int r = 1; r < s.ranks; ++r) all += stats[std::size_t(r)].rays;
+    std::fprintf(stderr, "all ranks (tiles handed out twice counted twice):\n");
+    cli::print_rays(all, wall);
 }
 
 }  // namespace

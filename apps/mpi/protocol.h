@@ -39,6 +39,7 @@ struct WorkerStats {
     double busy = 0, wall = 0;
     std::uint64_t bytes_sent = 0;
     std::int32_t tiles = 0, threads = 0;
+    RayCounts rays;  // of every share the rank rendered (a tile handed out twice counted twice)
 };
 
 // The Result message of a rendered share.

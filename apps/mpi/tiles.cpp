@@ -32,6 +32,7 @@ RenderedShare render_share(const Integrator& integrator, const RenderJob& job, c
     };
     const RenderStats stats = render_tiles(integrator, j, rects, out.film);
     out.rays = stats.rays.total();
+    out.counts = stats.rays;
     out.seconds = stats.seconds;
     if (rank == knobs.corrupt_rank)
         for (int t : out.tiles) out.film.at(grid.tile(t).x0, grid.tile(t).y0).sum.x += 1e-3f;

@@ -29,6 +29,7 @@ struct RenderedShare {
     std::vector<int> tiles;  // finished, in the order they finished
     Film film;               // covers every tile of the share
     std::uint64_t rays = 0;
+    RayCounts counts;  // by kind, with --stats' timed traversals
     double seconds = 0;
 };
 

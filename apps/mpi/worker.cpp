@@ -63,6 +63,7 @@ int run_worker(const RankSetup& s) {
             MPI_Send(bytes.data(), int(bytes.size()), MPI_BYTE, 0, kResult, MPI_COMM_WORLD);
             stats.bytes_sent += bytes.size();
             stats.tiles += std::int32_t(share->tiles.size());
+            stats.rays += share->counts;
             if (more) ++in_flight;
         }
         if (!said_bye && in_flight == 0 && queue.pending() == 0) {

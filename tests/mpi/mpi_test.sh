@@ -85,6 +85,16 @@ verify)
     "$WHITTED_MPI" "$src/scenes/textures.sc" -o "$out/one.png" --verify >"$out/log" 2>&1 && fail "one rank verified"
     grep -q "needs at least two ranks" "$out/log" || { cat "$out/log"; fail "no message"; }
     [[ ! -e $out/one.png ]] || fail "one rank wrote an image" ;;
+stats)
+    # --stats: every rank times its traversals, and rank 0 prints all ranks' rays and rates of each
+    # kind (the showcase traces all four), as whitted prints its own; the pixels are the same.
+    reference "$src/scenes/showcase.sc"
+    same_as_reference 2 "$src/scenes/showcase.sc" --threads 1 --tile-size 16 --stats
+    r='([1-9][0-9]*\.[0-9]+|0\.[0-9]*[1-9][0-9]*)'  # a rate above zero
+    grep -Eq "^traversal Mrays/s per thread \(1 in 32 timed\): camera $r, reflected $r, refracted $r, shadow $r$" \
+        "$out/log" || { cat "$out/log"; fail "no rate for each kind of ray"; }
+    camera=$(sed -n 's/^rays: camera \([0-9]*\), reflected [1-9][0-9]*, refracted [1-9][0-9]*, shadow [1-9][0-9]*;.*/\1/p' "$out/log")
+    ((${camera:-0} >= 96 * 72)) || { cat "$out/log"; fail "not every ray counted: camera ${camera:-none}"; } ;;
 duplicate_mismatch)
     # Rank 1's pixels are off by a little; with --verify each of its tiles is compared with rank 0's
     # (whichever comes first), so the job is refused whatever the timing. (Tail duplicates go through
