@@ -1,8 +1,8 @@
 #pragma once
 // Bounding volume hierarchy over the instances' world bounds. Built as a binary tree with the
-// binned surface area heuristic, then collapsed into a 4-wide tree whose nodes hold their four
-// children's boxes side by side, so that one SIMD test checks all four. Instances are reordered
-// so that every leaf is a contiguous range.
+// binned surface area heuristic, then collapsed into 4- and/or 8-wide trees whose nodes hold their
+// children's boxes side by side, so that one SIMD test checks them all (bvh_node.h says which a
+// scene gets). Instances are reordered so that every leaf is a contiguous range.
 #include <atomic>
 #include <cstdint>
 #include <functional>

@@ -1,5 +1,6 @@
 #pragma once
-// Any-hit traversal of the top-level BVH (4-wide; 8-wide in a scene with meshes, accel/bvh_node.h),
+// Any-hit traversal of the top-level BVH (8-wide where the CPU has AVX2, else 4-wide in a scene of
+// unit shapes: accel/bvh_node.h),
 // as Embree's rtcOccluded with an intersection filter: every
 // instance the ray crosses within (t_min, t_max) is offered to a visitor, in no particular order,
 // until the visitor says stop. Occlusion stops at the first; coloured-glass shadows multiply
@@ -57,10 +58,24 @@ WHITTED_BVH_INLINE bool walk_crossings_on(const BasicBvh<Node>& tree, const Inst
                                 });
 }
 
-// A scene of unit shapes: the 4-wide tree.
+#ifdef WHITTED_BVH_AVX2
+// A scene of unit shapes on a CPU with AVX2: the tree's 8-wide copy in AVX2 steps.
+template <class Visit>
+[[gnu::target("avx2"), gnu::flatten]] bool walk_unit_crossings_avx2(const Bvh8& tree, const Instance* inst,
+                                                                    const Ray& ray, float t_min, float t_max,
+                                                                    Visit& visit) {
+    return walk_crossings_on<false, BoxTesterAvx2>(tree, inst, nullptr, ray, t_min, t_max, visit);
+}
+#endif
+
+// A scene of unit shapes: the 8-wide copy where the CPU has AVX2, else the 4-wide tree.
 template <class Visit>
 bool walk_unit_crossings(const Bvh& bvh, const Instance* inst, const Ray& ray, float t_min, float t_max,
                          Visit& visit) {
+#ifdef WHITTED_BVH_AVX2
+    if (mesh_detail::use_avx2 && !bvh.wide.nodes.empty())
+        return walk_unit_crossings_avx2(bvh.wide, inst, ray, t_min, t_max, visit);
+#endif
     return walk_crossings_on<false, BoxTester>(static_cast<const BasicBvh<Bvh4Node>&>(bvh), inst, nullptr, ray, t_min,
                                                t_max, visit);
 }

@@ -1,8 +1,8 @@
 // Binned surface-area-heuristic build (Wald 2007) of a binary tree: per node, centroids are
 // binned along the widest centroid axis and the cheapest of the bin boundaries is chosen.
-// O(n log n) time, O(n) memory. The binary tree is then collapsed into the 4-wide node array
-// that traversal reads (each wide node adopts the largest-area grandchildren until it has four
-// children), and the instances are reordered to leaf order.
+// O(n log n) time, O(n) memory. The binary tree is then collapsed into the 4- or 8-wide node
+// arrays that traversal reads (each wide node adopts the largest-area grandchildren until it has
+// four or eight children), and the instances are reordered to leaf order.
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "accel/bvh.h"
+#include "accel/bvh_box_test_avx2.h"
 #include "accel/instance_geometry.h"
 #include "base/big_vector.h"
 #include "base/parallel_for.h"
@@ -365,14 +366,14 @@ std::uint32_t collapse(const BigVector<BinNode>& bin, std::uint32_t root, BigVec
     return index;
 }
 
-template <class Node>
-BasicBvh<Node> build_wide_bvh(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of,
-                              const BvhBuildCosts& costs, int threads_asked, std::vector<std::uint32_t>& order,
-                              const std::atomic<bool>* cancel) {
+// The binary tree over n boxes; order[i] gets the primitive at leaf place i. Empty (and order
+// the identity) for n = 0 or when cancelled.
+BigVector<BinNode> build_binary_tree(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of,
+                                     const BvhBuildCosts& costs, int threads_asked, std::vector<std::uint32_t>& order,
+                                     const std::atomic<bool>* cancel) {
     const int threads = build_threads(threads_asked);
-    BasicBvh<Node> bvh;
     order.clear();
-    if (n == 0) return bvh;
+    if (n == 0) return {};
     if (n >= Bvh4Node::kMaxInstances) throw std::length_error("too many primitives for the BVH");
 
     order.resize(n);  // leaf order: the primitive that goes to place i
@@ -381,7 +382,7 @@ BasicBvh<Node> build_wide_bvh(std::size_t n, const std::function<Bounds(std::uin
         for (std::uint32_t i = 0; i < n; ++i) order[i] = i;  // an unfinished tree: nothing of it is kept
         return true;
     };
-    if (cancelled()) return bvh;
+    if (cancelled()) return {};
     BigVector<PrimRef> refs(n);
     parallel_chunks(n, threads, [&](std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t i = begin; i < end; ++i) {
@@ -392,17 +393,31 @@ BasicBvh<Node> build_wide_bvh(std::size_t n, const std::function<Bounds(std::uin
             refs[i] = {V4{b.lo.x, b.lo.y, b.lo.z, index}, V4{b.hi.x, b.hi.y, b.hi.z, 0.0f}};
         }
     });
-    if (cancelled()) return bvh;
+    if (cancelled()) return {};
     BigVector<BinNode> bin = build_binary(refs, threads, costs, cancel);
-    if (cancelled()) return bvh;
+    if (cancelled()) return {};
     for (std::uint32_t i = 0; i < n; ++i) order[i] = refs[i].index();
-    BigVector<PrimRef>().swap(refs);  // lower the peak: the refs are done with
+    return bin;
+}
+
+// The binary tree collapsed into W-wide nodes.
+template <class Node>
+BasicBvh<Node> collapse_tree(const BigVector<BinNode>& bin) {
+    BasicBvh<Node> bvh;
+    if (bin.empty()) return bvh;
     bvh.box = bin[0].box;
     // The binary tree has ~2n/L nodes for leaves of L; a W-wide node replaces W − 1 inner
     // ones, so ~2n/((W − 1)L) wide nodes. Untouched reserved pages cost no memory.
     bvh.nodes.reserve(bin.size() / (Node::kWidth - 1) + 1);
     collapse(bin, 0, bvh.nodes, Node::kWidth > 4 ? leaves_under(bin) : BigVector<std::uint32_t>());
     return bvh;
+}
+
+template <class Node>
+BasicBvh<Node> build_wide_bvh(std::size_t n, const std::function<Bounds(std::uint32_t)>& box_of,
+                              const BvhBuildCosts& costs, int threads, std::vector<std::uint32_t>& order,
+                              const std::atomic<bool>* cancel) {
+    return collapse_tree<Node>(build_binary_tree(n, box_of, costs, threads, order, cancel));
 }
 
 }  // namespace
@@ -432,9 +447,17 @@ Bvh build_bvh(std::vector<Instance>& instances, int threads, const std::vector<T
         bvh.wide.nodes.shrink_to_fit();
         bvh.box = bvh.wide.box;
     } else {
-        static_cast<BasicBvh<Bvh4Node>&>(bvh) =
-            build_wide_bvh<Bvh4Node>(instances.size(), box_of, {traversal_cost, kMaxInstanceLeaf}, threads, source,
-                                     cancel);
+        // 4-wide for the packets; where the CPU has AVX2, an 8-wide copy of the same tree for
+        // single rays (bvh_node.h).
+        const BigVector<BinNode> bin = build_binary_tree(instances.size(), box_of,
+                                                         {traversal_cost, kMaxInstanceLeaf}, threads, source, cancel);
+        static_cast<BasicBvh<Bvh4Node>&>(bvh) = collapse_tree<Bvh4Node>(bin);
+#ifdef WHITTED_BVH_AVX2
+        if (bvh_detail::cpu_has_avx2()) {
+            bvh.wide = collapse_tree<Bvh8Node>(bin);
+            bvh.wide.nodes.shrink_to_fit();
+        }
+#endif
     }
     const std::size_t n = instances.size();
     if (cancel && cancel->load(std::memory_order_relaxed)) {  // the instances stay as they were

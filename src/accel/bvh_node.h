@@ -43,8 +43,9 @@ struct BasicBvh {
 using Bvh8 = BasicBvh<Bvh8Node>;  // a mesh's, over its triangles
 
 // The top level, over instances. A scene of unit shapes has it 4-wide (`nodes`: the packet walk
-// and the hand-written single-ray walk of bvh_traverse.cpp read it). A scene with mesh instances
-// has it 8-wide instead (`wide`, `nodes` empty): with the meshes' own 8-wide BVHs a ray runs AVX2
+// reads it, and single rays where the CPU lacks AVX2) and, where the CPU has AVX2, also the same
+// tree collapsed 8-wide (`wide`) for single rays, tested in AVX2 steps. A scene with mesh instances
+// has it 8-wide only (`wide`, `nodes` empty): with the meshes' own 8-wide BVHs a ray runs AVX2
 // box tests all the way down, and its packets go one ray at a time (bvh_packet.cpp).
 struct Bvh : BasicBvh<Bvh4Node> {
     Bvh8 wide;

@@ -12,13 +12,11 @@ namespace whitted {
 
 namespace {
 
-// The walk of a scene with mesh instances over `tree` (its 8-wide top level, bvh_node.h) with box
-// tester Tester: the leaves test each instance's kind (a scene without them takes
-// nearest_unit_shapes below; the query decides once which walk to take).
-template <class Tester, class Node>
-WHITTED_BVH_INLINE bool nearest_with_meshes_on(const BasicBvh<Node>& tree, const Instance* inst,
-                                               const MeshBvh* mesh, const Ray& ray, float t_min, float t_max,
-                                               Hit& hit) {
+// The walk over `tree` (4- or 8-wide) with box tester Tester. kMeshes: the scene has mesh
+// instances, whose own BVHs the leaves go down (else no instance's kind is tested against Mesh).
+template <bool kMeshes, class Tester, class Node>
+WHITTED_BVH_INLINE bool nearest_on(const BasicBvh<Node>& tree, const Instance* inst, const MeshBvh* mesh,
+                                   const Ray& ray, float t_min, float t_max, Hit& hit) {
     bool found = false;
     float best = t_max;
     std::uint32_t best_index = 0;
@@ -26,10 +24,12 @@ WHITTED_BVH_INLINE bool nearest_with_meshes_on(const BasicBvh<Node>& tree, const
     bvh_detail::TriangleState tri;
     const auto leaf = [&](std::uint32_t first, std::uint32_t end) WHITTED_BVH_LAMBDA_INLINE {
         for (std::uint32_t i = first; i < end; ++i) {
-            if (inst[i].kind == ShapeKind::Mesh) {
-                bvh_detail::offer_mesh_nearest(mesh[inst[i].mesh], inst[i], ray, i, t_min, t_max, best, best_index,
-                                               best_part, found, tri);
-                continue;
+            if constexpr (kMeshes) {
+                if (inst[i].kind == ShapeKind::Mesh) {
+                    bvh_detail::offer_mesh_nearest(mesh[inst[i].mesh], inst[i], ray, i, t_min, t_max, best,
+                                                   best_index, best_part, found, tri);
+                    continue;
+                }
             }
             bvh_detail::offer_nearest(bvh_detail::intersect_instance(inst[i], ray), i, t_min, t_max, best, best_index,
                                       best_part, found);
@@ -38,7 +38,7 @@ WHITTED_BVH_INLINE bool nearest_with_meshes_on(const BasicBvh<Node>& tree, const
     const bvh_detail::BoxRay box_ray(ray);
     bvh_detail::walk_nearest_with(Tester(box_ray), tree, t_min, best, leaf);
     if (!found) return false;
-    hit = bvh_detail::make_hit(inst, best, best_index, best_part, tri);
+    hit = kMeshes ? bvh_detail::make_hit(inst, best, best_index, best_part, tri) : Hit{best, best_index, best_part};
     return true;
 }
 
@@ -46,22 +46,31 @@ WHITTED_BVH_INLINE bool nearest_with_meshes_on(const BasicBvh<Node>& tree, const
 [[gnu::target("avx2"), gnu::flatten]] bool nearest_with_meshes_avx2(const Bvh8& tree, const Instance* inst,
                                                                     const MeshBvh* mesh, const Ray& ray,
                                                                     float t_min, float t_max, Hit& hit) {
-    return nearest_with_meshes_on<bvh_detail::BoxTesterAvx2>(tree, inst, mesh, ray, t_min, t_max, hit);
+    return nearest_on<true, bvh_detail::BoxTesterAvx2>(tree, inst, mesh, ray, t_min, t_max, hit);
+}
+
+// A scene of unit shapes on a CPU with AVX2: single rays take the tree's 8-wide copy, 1.1-1.3x
+// the rays per second of the 4-wide walk below (bench/RESULTS.md).
+[[gnu::target("avx2"), gnu::flatten]] bool nearest_unit_shapes_avx2(const Bvh8& tree, const Instance* inst,
+                                                                    const Ray& ray, float t_min, float t_max,
+                                                                    Hit& hit) {
+    return nearest_on<false, bvh_detail::BoxTesterAvx2>(tree, inst, nullptr, ray, t_min, t_max, hit);
 }
 #endif
 
 bool nearest_with_meshes(const Bvh& bvh, const Instance* inst, const MeshBvh* mesh, const Ray& ray, float t_min,
                          float t_max, Hit& hit) {
     if (bvh.wide.nodes.empty())  // a tree built without its 8-wide copy
-        return nearest_with_meshes_on<bvh_detail::BoxTester>(static_cast<const BasicBvh<Bvh4Node>&>(bvh), inst, mesh,
-                                                             ray, t_min, t_max, hit);
+        return nearest_on<true, bvh_detail::BoxTester>(static_cast<const BasicBvh<Bvh4Node>&>(bvh), inst, mesh, ray,
+                                                       t_min, t_max, hit);
 #ifdef WHITTED_BVH_AVX2
     if (mesh_detail::use_avx2) return nearest_with_meshes_avx2(bvh.wide, inst, mesh, ray, t_min, t_max, hit);
 #endif
-    return nearest_with_meshes_on<bvh_detail::BoxTester>(bvh.wide, inst, mesh, ray, t_min, t_max, hit);
+    return nearest_on<true, bvh_detail::BoxTester>(bvh.wide, inst, mesh, ray, t_min, t_max, hit);
 }
 
-// The walk of a scene of unit shapes alone, written out by hand as before the mesh-capable walk
+// The walk of a scene of unit shapes alone over its 4-wide tree (where the CPU lacks AVX2, or the
+// tests turn it off), written out by hand as before the mesh-capable walk
 // rather than through walk_nearest: the same order, pruning and tie rule (so the same
 // hits), but GCC keeps the box test's per-ray row offsets in registers here and not in the
 // template (about 100 M instructions of the one-sample 1080p render, bench/RESULTS.md).
@@ -149,6 +158,10 @@ bool intersect_nearest(const Bvh& bvh, const std::vector<Instance>& instances, c
                        Hit& hit, const std::vector<MeshBvh>* meshes) {
     if (bvh_detail::has_meshes(meshes))
         return nearest_with_meshes(bvh, instances.data(), meshes->data(), ray, t_min, t_max, hit);
+#ifdef WHITTED_BVH_AVX2
+    if (mesh_detail::use_avx2 && !bvh.wide.nodes.empty())
+        return nearest_unit_shapes_avx2(bvh.wide, instances.data(), ray, t_min, t_max, hit);
+#endif
     return nearest_unit_shapes(bvh, instances.data(), ray, t_min, t_max, hit);
 }
 

@@ -21,10 +21,11 @@ struct FlattenResult {
     bool ok() const { return !has_errors(diagnostics) && !cancelled; }
 };
 
-// What one object costs at the peak of a load: 56 bytes of Instance, about 25 of BVH nodes (about
-// 50 where the scene has meshes: its top level is 8-wide, accel/bvh_node.h) and the build's
-// temporary arrays (bench/RESULTS.md: 1M instances, 120 MB peak RSS of a whole CLI run;
-// 4.9 GB measured for 48M, 102 bytes each). Rounded up: an estimate must not be low.
+// What one object costs at the peak of a load: 60 bytes of Instance, about 25 of 4-wide BVH
+// nodes and, where the CPU has AVX2, about 16 more of their 8-wide copy (about 50 where the scene
+// has meshes: its top level is 8-wide only, accel/bvh_node.h) and the build's temporary arrays
+// (bench/RESULTS.md: 1M instances, 160 MB peak RSS of a whole CLI run; 4.9 GB measured for 48M,
+// 102 bytes each, before the 8-wide copy). Rounded up: an estimate must not be low.
 constexpr std::size_t kBytesPerInstance = 128;
 // And each step of the walk (a trans block or a subgraph use) may add one 8-byte provenance link,
 // the pixel inspector's chain of lines (flatten/provenance.h).

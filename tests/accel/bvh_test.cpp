@@ -14,6 +14,7 @@
 #include "accel/bvh_any_hit.h"
 #include "accel/bvh_test_scenes.h"
 #include "accel/instance_geometry.h"
+#include "accel/mesh_bvh.h"
 
 namespace whitted {
 namespace {
@@ -33,12 +34,10 @@ void expect_same_nearest(const Bvh& bvh, const std::vector<Instance>& instances,
     ASSERT_EQ(a.part, b.part) << "ray " << ray_index;
 }
 
-// Walks the tree: every instance in exactly one leaf, every box containing what is below it.
-void check_structure(const Bvh& bvh, const std::vector<Instance>& instances) {
-    if (instances.empty()) {
-        EXPECT_TRUE(bvh.nodes.empty());
-        return;
-    }
+// Walks a tree: every instance in exactly one leaf, every box containing what is below it.
+template <class Node>
+void check_tree(const BasicBvh<Node>& bvh, const std::vector<Instance>& instances) {
+    constexpr int W = Node::kWidth;
     ASSERT_FALSE(bvh.nodes.empty());
     std::vector<int> seen(instances.size(), 0);
     struct Item { std::uint32_t node; int depth; };
@@ -48,15 +47,15 @@ void check_structure(const Bvh& bvh, const std::vector<Instance>& instances) {
         Item it = stack.back();
         stack.pop_back();
         max_depth = std::max(max_depth, it.depth);
-        const Bvh4Node& n = bvh.nodes.at(it.node);
-        for (int s = 0; s < 4; ++s) {
+        const Node& n = bvh.nodes.at(it.node);
+        for (int s = 0; s < W; ++s) {
             Bounds box;
             box.lo = {n.box[0][s], n.box[1][s], n.box[2][s]};
             box.hi = {n.box[3][s], n.box[4][s], n.box[5][s]};
             if (box.empty()) continue;
             const std::uint32_t ref = n.child[s];
-            if (Bvh4Node::is_leaf(ref)) {
-                for (std::uint32_t i = Bvh4Node::leaf_first(ref); i < Bvh4Node::leaf_first(ref) + Bvh4Node::leaf_count(ref); ++i) {
+            if (Node::is_leaf(ref)) {
+                for (std::uint32_t i = Node::leaf_first(ref); i < Node::leaf_first(ref) + Node::leaf_count(ref); ++i) {
                     ASSERT_LT(i, instances.size());
                     ++seen[i];
                     Bounds b = world_bounds(instances[i]);
@@ -67,8 +66,8 @@ void check_structure(const Bvh& bvh, const std::vector<Instance>& instances) {
                 }
             } else {
                 ASSERT_GT(ref, it.node) << "children follow their parent";
-                const Bvh4Node& c = bvh.nodes.at(ref);
-                for (int cs = 0; cs < 4; ++cs) {
+                const Node& c = bvh.nodes.at(ref);
+                for (int cs = 0; cs < W; ++cs) {
                     if (c.box[0][cs] > c.box[3][cs]) continue;
                     for (int a = 0; a < 3; ++a) {
                         ASSERT_LE(box.lo[a], c.box[a][cs]);
@@ -83,7 +82,37 @@ void check_structure(const Bvh& bvh, const std::vector<Instance>& instances) {
     EXPECT_LT(max_depth, 96);
 }
 
-TEST(Bvh, NearestHitMatchesBruteForceOnRandomScenes) {
+// A scene of unit shapes: the 4-wide tree the packets walk and, where the CPU has AVX2, its 8-wide
+// copy for single rays over the same instance order (bvh_node.h).
+void check_structure(const Bvh& bvh, const std::vector<Instance>& instances) {
+    if (instances.empty()) {
+        EXPECT_TRUE(bvh.empty());
+        return;
+    }
+    check_tree(static_cast<const BasicBvh<Bvh4Node>&>(bvh), instances);
+    if (mesh_detail::cpu_allows_avx2()) {
+        ASSERT_FALSE(bvh.wide.nodes.empty()) << "a CPU with AVX2 gets the 8-wide copy";
+        check_tree(bvh.wide, instances);
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_EQ(bvh.wide.box.lo[a], bvh.box.lo[a]);
+            EXPECT_EQ(bvh.wide.box.hi[a], bvh.box.hi[a]);
+        }
+    }
+}
+
+// Single rays walk the 8-wide copy in AVX2 steps where the CPU has it, else the 4-wide tree
+// (bvh_node.h): the walk tests run both ways and must give brute force's answers either way.
+class BvhWalk : public ::testing::TestWithParam<bool> {
+protected:
+    void SetUp() override {
+        if (set_mesh_walks_use_avx2(GetParam()) != GetParam()) GTEST_SKIP() << "this CPU has no AVX2";
+    }
+    void TearDown() override { set_mesh_walks_use_avx2(true); }  // the default: AVX2 where the CPU has it
+};
+INSTANTIATE_TEST_SUITE_P(BoxTest, BvhWalk, ::testing::Values(true, false),
+                         [](const ::testing::TestParamInfo<bool>& p) { return p.param ? "Avx2" : "Sse"; });
+
+TEST_P(BvhWalk, NearestHitMatchesBruteForceOnRandomScenes) {
     for (std::uint32_t seed : {1u, 2u, 3u, 4u, 5u}) {
         SCOPED_TRACE(seed);
         RandomScene scene = random_scene(seed, 200 + 60 * int(seed), 10.0f);
@@ -103,7 +132,7 @@ TEST(Bvh, NearestHitMatchesBruteForceOnRandomScenes) {
     }
 }
 
-TEST(Bvh, FarAwayRaysMatchBruteForceAndHitTheSurface) {
+TEST_P(BvhWalk, FarAwayRaysMatchBruteForceAndHitTheSurface) {
     // Small objects seen from ~1000 units away (a big grid scene): in float, the cone's quadratic
     // once gave hits well off the surface from such origins, which the tight boxes then culled,
     // so the BVH and brute force disagreed. Every hit must lie on its shape.
@@ -182,7 +211,7 @@ glm::vec3 transmittance_brute_force(const std::vector<Instance>& instances, cons
     return f.through;
 }
 
-TEST(Bvh, TransmittanceMatchesBruteForce) {
+TEST_P(BvhWalk, TransmittanceMatchesBruteForce) {
     for (std::uint32_t seed : {11u, 12u, 13u}) {
         SCOPED_TRACE(seed);
         RandomScene scene = random_scene(seed, 300, 10.0f);
@@ -207,7 +236,7 @@ TEST(Bvh, TransmittanceMatchesBruteForce) {
 TEST(Bvh, EmptyScene) {
     std::vector<Instance> none;
     Bvh bvh = build_bvh(none);
-    EXPECT_TRUE(bvh.nodes.empty());
+    EXPECT_TRUE(bvh.empty());
     EXPECT_TRUE(bvh.bounds().empty());
     Hit h;
     EXPECT_FALSE(intersect_nearest(bvh, none, Ray{}, 0.0f, kInf, h));
@@ -224,7 +253,7 @@ TEST(Bvh, SingleInstance) {
     EXPECT_FALSE(intersect_nearest(bvh, one, Ray{{0, 2, 5}, {0, 0, -1}}, 0.0f, kInf, h));
 }
 
-TEST(Bvh, AllInstancesInOnePlace) {
+TEST_P(BvhWalk, AllInstancesInOnePlace) {
     // Identical instances: equal distances everywhere, so the lowest index must win, as in the
     // brute-force loop; nothing separates the centres, so the build splits at the median.
     std::vector<Instance> same;
@@ -240,7 +269,7 @@ TEST(Bvh, AllInstancesInOnePlace) {
     }
 }
 
-TEST(Bvh, DeepStacksOf100kInstances) {
+TEST_P(BvhWalk, DeepStacksOf100kInstances) {
     // Centres on a geometric progression make every SAH split peel off a few instances: the tree
     // would be ~n deep without the depth limit; traversal's fixed stack must still suffice.
     std::vector<Instance> stack;
@@ -275,7 +304,7 @@ TEST(Bvh, ACancelledBuildLeavesNothingHalfMade) {
     const std::atomic<bool> cancel{true};
     std::vector<std::uint32_t> order;
     const Bvh bvh = build_bvh(scene.instances, 1, nullptr, &order, &cancel);
-    EXPECT_TRUE(bvh.nodes.empty());
+    EXPECT_TRUE(bvh.empty());
     EXPECT_TRUE(order.empty());
     for (std::size_t i = 0; i < before.size(); ++i)
         ASSERT_EQ(std::memcmp(&scene.instances[i], &before[i], sizeof(Instance)), 0);
