@@ -62,23 +62,23 @@ int CubeLight::face_of(const glm::vec3& n) {
     return 2 * axis + (n[axis] < 0.0f ? 1 : 0);
 }
 
-void CubeLight::face_probabilities(const glm::vec3& x, double (&p)[6], double (&omega)[6]) const {
-    // In front of a face: x on its outer side. Its solid angle: the parallelogram as two triangles,
-    // whose triple products are both (corner − x) · (edge_a × edge_b) = distance · area, free of
-    // the cancellation of the triple product of three long vectors seen from far off.
-    double omega_sum = 0.0, area_sum = 0.0;
+void CubeLight::face_probabilities(const glm::vec3& x, double (&p)[6]) const {
+    // In front of a face: x on its outer side. Its share: the face's solid angle as a point at its
+    // centre would subtend it, area · cos / d² (the exact one, found for the face chosen alone,
+    // cost two to three times as much for the two or three faces x sees: any shares give the
+    // same expectation, as long as sample() and pdf_area() use the same).
+    double share_sum = 0.0, area_sum = 0.0;
     bool seen[6];
     const glm::dvec3 xd(x);
     for (int k = 0; k < 6; ++k) {
-        omega[k] = 0.0;
-        const double h = glm::dot(normal_d_[k], xd - centre_d_[k]);
+        p[k] = 0.0;
+        const glm::dvec3 to = xd - centre_d_[k];
+        const double h = glm::dot(normal_d_[k], to);
         seen[k] = h > 0.0;
         if (!seen[k]) continue;
-        const glm::dvec3 a = corner_d_[k] - xd, &ea = edge_a_d_[k], &eb = edge_b_d_[k];
-        const glm::dvec3 b = a + ea, c = b + eb, d = a + eb;
-        const double triple = h * double(area_[k]);
-        omega[k] = parallelogram_solid_angle(a, b, c, d, triple);
-        omega_sum += omega[k];
+        const double d2 = glm::dot(to, to);
+        p[k] = double(area_[k]) * h / (d2 * std::sqrt(d2));
+        share_sum += p[k];
         area_sum += area_[k];
     }
     if (!(area_sum > 0.0)) {  // inside (or on) the cube: every face's inner side, by area
@@ -86,26 +86,37 @@ void CubeLight::face_probabilities(const glm::vec3& x, double (&p)[6], double (&
         for (int k = 0; k < 6; ++k) p[k] = area_[k] / total;
         return;
     }
-    // Solid angles too small for a double (faces out of sight by 1e150): the faces by area.
-    for (int k = 0; k < 6; ++k)
-        p[k] = omega_sum > 0.0 ? omega[k] / omega_sum : seen[k] ? area_[k] / area_sum : 0.0;
+    // Shares too small (or large) for a double (faces 1e100 off): the faces seen by area.
+    const bool finite = share_sum > 0.0 && share_sum < 1e300;
+    for (int k = 0; k < 6; ++k) p[k] = finite ? p[k] / share_sum : seen[k] ? area_[k] / area_sum : 0.0;
 }
 
-float CubeLight::density(const glm::vec3& x, const glm::vec3& p, int k, const double (&prob)[6],
-                         const double (&omega)[6]) const {
-    if (!(prob[k] > 0.0)) return 0.0f;
-    if (!by_solid_angle(k, omega[k])) return float(prob[k] / area_[k]);
+double CubeLight::solid_angle(const glm::vec3& x, int k) const {
+    const glm::dvec3 xd(x);
+    const double h = glm::dot(normal_d_[k], xd - centre_d_[k]);
+    if (!(h > 0.0)) return 0.0;
+    // The parallelogram as two triangles, whose triple products are both
+    // (corner − x) · (edge_a × edge_b) = distance · area, free of the cancellation of the triple
+    // product of three long vectors seen from far off.
+    const glm::dvec3 a = corner_d_[k] - xd, &ea = edge_a_d_[k], &eb = edge_b_d_[k];
+    const glm::dvec3 b = a + ea, c = b + eb, d = a + eb;
+    return parallelogram_solid_angle(a, b, c, d, h * double(area_[k]));
+}
+
+float CubeLight::density(const glm::vec3& x, const glm::vec3& p, int k, double prob, double omega) const {
+    if (!(prob > 0.0)) return 0.0f;
+    if (!by_solid_angle(k, omega)) return float(prob / area_[k]);
     // 1 / omega per unit solid angle (the two triangles' solid angle is the spherical rectangle's
     // to double's rounding, and cheaper); a unit of area at p is cos_light / d² of it.
     const glm::dvec3 to = glm::dvec3(p) - glm::dvec3(x);
     const double d2 = glm::dot(to, to);
     const double cos_light = std::abs(glm::dot(normal_d_[k], to)) / std::sqrt(d2);
-    return float(prob[k] / omega[k] * cos_light / d2);
+    return float(prob / omega * cos_light / d2);
 }
 
 CubeLight::Sample CubeLight::sample(const glm::vec3& x, glm::vec2 u) const {
-    double p[6], omega[6];
-    face_probabilities(x, p, omega);
+    double p[6];
+    face_probabilities(x, p);
     // u.x picks the face and is stretched back to [0, 1) within its share (stratification kept);
     // past the rounding of the sum, the last face that can be chosen.
     int k = 0;
@@ -118,16 +129,18 @@ CubeLight::Sample CubeLight::sample(const glm::vec3& x, glm::vec2 u) const {
         below += p[j];
     }
     glm::vec2 st(std::clamp(float((double(u.x) - start) / p[k]), 0.0f, 0x1.fffffep-1f), u.y);
-    if (by_solid_angle(k, omega[k]))
-        st = SphericalRectangle(x, corner_[k], frame_[k], omega[k]).sample(st);
+    const double omega = rectangle_[k] ? solid_angle(x, k) : 0.0;
+    if (by_solid_angle(k, omega))
+        st = SphericalRectangle(x, corner_[k], frame_[k], omega).sample(st);
     const glm::vec3 point = corner_[k] + st.x * edge_a_[k] + st.y * edge_b_[k];
-    return {point, normal_[k], density(x, point, k, p, omega)};
+    return {point, normal_[k], density(x, point, k, p[k], omega)};
 }
 
 float CubeLight::pdf_area(const glm::vec3& x, const glm::vec3& point, int face) const {
-    double p[6], omega[6];
-    face_probabilities(x, p, omega);
-    return density(x, point, face, p, omega);
+    double p[6];
+    face_probabilities(x, p);
+    if (!(p[face] > 0.0)) return 0.0f;
+    return density(x, point, face, p[face], rectangle_[face] ? solid_angle(x, face) : 0.0);
 }
 
 }  // namespace whitted

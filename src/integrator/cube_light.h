@@ -2,9 +2,10 @@
 // An emissive cube seen from a shading point (path tracing, scene-format.md §9.2). Emission is
 // two-sided, but the cube is convex and closed: from outside, a face's points can be seen only if
 // the point is in front of that face's plane (at most three faces); the others are hidden behind
-// them. So only those faces are sampled, each chosen with probability its share of their solid
-// angle (exact, Van Oosterom and Strackee 1983), and on it uniform in the solid angle it subtends
-// (sampler/spherical_rectangle.h) when it is a rectangle in the world (a matrix that shears the
+// them. So only those faces are sampled, each chosen in proportion to the solid angle it would
+// subtend as a point at its centre (area · cos / d²), and on it uniform in the solid angle it
+// subtends (sampler/spherical_rectangle.h; the exact angle: Van Oosterom and Strackee 1983) when
+// it is a rectangle in the world (a matrix that shears the
 // cube makes parallelograms of its faces) and its solid angle is neither tiny nor close to a
 // hemisphere (kMinSolidAngle, kMaxSolidAngle); else uniform by world area on it. From inside, all
 // six by world area. The density depends on the shading point and, per unit area, on the point
@@ -46,15 +47,15 @@ public:
     static constexpr double kMaxSolidAngle = 6.22;
 
 private:
-    // The probability of choosing each face from x (0 for faces that cannot be seen from there)
-    // and the solid angle of each face x is in front of (0 for the others, and from inside).
-    void face_probabilities(const glm::vec3& x, double (&p)[6], double (&omega)[6]) const;
+    // The probability of choosing each face from x (0 for faces that cannot be seen from there).
+    void face_probabilities(const glm::vec3& x, double (&p)[6]) const;
+    // The solid angle of face k from x (0 if x is not in front of it).
+    double solid_angle(const glm::vec3& x, int k) const;
     // Whether face k, of solid angle omega from x, is sampled in solid angle (else by area).
     bool by_solid_angle(int k, double omega) const {
         return rectangle_[k] && omega >= kMinSolidAngle && omega <= kMaxSolidAngle;
     }
-    float density(const glm::vec3& x, const glm::vec3& p, int k, const double (&prob)[6],
-                  const double (&omega)[6]) const;
+    float density(const glm::vec3& x, const glm::vec3& p, int k, double prob, double omega) const;
 
     glm::vec3 corner_[6], edge_a_[6], edge_b_[6];  // face k = corner + [0,1]·edge_a + [0,1]·edge_b
     glm::vec3 centre_[6], normal_[6];
