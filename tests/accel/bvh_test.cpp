@@ -15,6 +15,7 @@
 #include "accel/bvh_test_scenes.h"
 #include "accel/instance_geometry.h"
 #include "accel/mesh_bvh.h"
+#include "accel/walk_both_ways.h"
 
 namespace whitted {
 namespace {
@@ -100,17 +101,10 @@ void check_structure(const Bvh& bvh, const std::vector<Instance>& instances) {
     }
 }
 
-// Single rays walk the 8-wide copy in AVX2 steps where the CPU has it, else the 4-wide tree
-// (bvh_node.h): the walk tests run both ways and must give brute force's answers either way.
-class BvhWalk : public ::testing::TestWithParam<bool> {
-protected:
-    void SetUp() override {
-        if (set_mesh_walks_use_avx2(GetParam()) != GetParam()) GTEST_SKIP() << "this CPU has no AVX2";
-    }
-    void TearDown() override { set_mesh_walks_use_avx2(true); }  // the default: AVX2 where the CPU has it
-};
-INSTANTIATE_TEST_SUITE_P(BoxTest, BvhWalk, ::testing::Values(true, false),
-                         [](const ::testing::TestParamInfo<bool>& p) { return p.param ? "Avx2" : "Sse"; });
+// Single rays walk the 8-wide copy in AVX2 steps where the CPU has it, else the 4-wide tree: the
+// walk tests run both ways and must give brute force's answers either way.
+class BvhWalk : public WalkBothWays {};
+INSTANTIATE_TEST_SUITE_P(BoxTest, BvhWalk, ::testing::Values(true, false), walk_name);
 
 TEST_P(BvhWalk, NearestHitMatchesBruteForceOnRandomScenes) {
     for (std::uint32_t seed : {1u, 2u, 3u, 4u, 5u}) {

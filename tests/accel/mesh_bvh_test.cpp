@@ -16,6 +16,7 @@
 #include "accel/scene.h"
 #include "integrator/surface.h"
 #include "accel/mesh_bvh.h"
+#include "accel/walk_both_ways.h"
 #include "mesh/mesh_test_support.h"
 
 namespace whitted {
@@ -34,15 +35,8 @@ Ray random_ray(std::mt19937& rng, float spread) {
 
 // The mesh walks test a node's eight boxes in one AVX2 step where the CPU has it, else in two SSE
 // steps (mesh_bvh.h): the walk tests run both ways, and must give the same answers.
-class MeshBvhWalk : public ::testing::TestWithParam<bool> {
-protected:
-    void SetUp() override {
-        if (set_mesh_walks_use_avx2(GetParam()) != GetParam()) GTEST_SKIP() << "this CPU has no AVX2";
-    }
-    void TearDown() override { set_mesh_walks_use_avx2(true); }  // the default: AVX2 where the CPU has it
-};
-INSTANTIATE_TEST_SUITE_P(BoxTest, MeshBvhWalk, ::testing::Values(true, false),
-                         [](const ::testing::TestParamInfo<bool>& p) { return p.param ? "Avx2" : "Sse"; });
+class MeshBvhWalk : public test::WalkBothWays {};
+INSTANTIATE_TEST_SUITE_P(BoxTest, MeshBvhWalk, ::testing::Values(true, false), test::walk_name);
 
 TEST_P(MeshBvhWalk, NearestHitIsTheBruteForceOneOnRandomMeshes) {
     for (unsigned seed = 1; seed <= 4; ++seed) {
@@ -123,8 +117,7 @@ void expect_same_hit(const Hit& got, const Hit& want, const char* what, int i) {
 
 // The top level of a scene with meshes is walked 8-wide too (accel/bvh_node.h), both ways.
 class TwoLevelBvhWalk : public MeshBvhWalk {};
-INSTANTIATE_TEST_SUITE_P(BoxTest, TwoLevelBvhWalk, ::testing::Values(true, false),
-                         [](const ::testing::TestParamInfo<bool>& p) { return p.param ? "Avx2" : "Sse"; });
+INSTANTIATE_TEST_SUITE_P(BoxTest, TwoLevelBvhWalk, ::testing::Values(true, false), test::walk_name);
 
 TEST_P(TwoLevelBvhWalk, NearestHitWithMeshInstancesIsTheBruteForceOne) {
     const Scene scene = accelerate(mixed_scene(3, 60), 1);
