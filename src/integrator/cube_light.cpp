@@ -48,6 +48,8 @@ CubeLight::CubeLight(const Instance& inst) {
         const float la = glm::length(edge_a_[k]), lb = glm::length(edge_b_[k]);
         rectangle_[k] = std::abs(glm::dot(edge_a_[k], edge_b_[k])) <= 1e-5f * la * lb && area_[k] > 0.0f;
         if (rectangle_[k]) frame_[k] = SphericalRectangle::Frame(edge_a_[k], edge_b_[k]);
+        const glm::dvec3 diagonal = glm::dvec3(edge_a_[k]) + glm::dvec3(edge_b_[k]);
+        reach2_[k] = kReach * kReach * glm::dot(diagonal, diagonal) / 4.0;
         corner_d_[k] = corner_[k];
         edge_a_d_[k] = edge_a_[k];
         edge_b_d_[k] = edge_b_[k];
@@ -103,6 +105,12 @@ double CubeLight::solid_angle(const glm::vec3& x, int k) const {
     return parallelogram_solid_angle(a, b, c, d, h * double(area_[k]));
 }
 
+double CubeLight::sampled_solid_angle(const glm::vec3& x, int k) const {
+    if (!rectangle_[k]) return 0.0;
+    const glm::dvec3 to = glm::dvec3(x) - centre_d_[k];
+    return glm::dot(to, to) < reach2_[k] ? solid_angle(x, k) : 0.0;
+}
+
 float CubeLight::density(const glm::vec3& x, const glm::vec3& p, int k, double prob, double omega) const {
     if (!(prob > 0.0)) return 0.0f;
     if (!by_solid_angle(k, omega)) return float(prob / area_[k]);
@@ -129,7 +137,7 @@ CubeLight::Sample CubeLight::sample(const glm::vec3& x, glm::vec2 u) const {
         below += p[j];
     }
     glm::vec2 st(std::clamp(float((double(u.x) - start) / p[k]), 0.0f, 0x1.fffffep-1f), u.y);
-    const double omega = rectangle_[k] ? solid_angle(x, k) : 0.0;
+    const double omega = sampled_solid_angle(x, k);
     if (by_solid_angle(k, omega))
         st = SphericalRectangle(x, corner_[k], frame_[k], omega).sample(st);
     const glm::vec3 point = corner_[k] + st.x * edge_a_[k] + st.y * edge_b_[k];
@@ -140,7 +148,7 @@ float CubeLight::pdf_area(const glm::vec3& x, const glm::vec3& point, int face) 
     double p[6];
     face_probabilities(x, p);
     if (!(p[face] > 0.0)) return 0.0f;
-    return density(x, point, face, p[face], rectangle_[face] ? solid_angle(x, face) : 0.0);
+    return density(x, point, face, p[face], sampled_solid_angle(x, face));
 }
 
 }  // namespace whitted

@@ -6,8 +6,8 @@
 // subtend as a point at its centre (area · cos / d²), and on it uniform in the solid angle it
 // subtends (sampler/spherical_rectangle.h; the exact angle: Van Oosterom and Strackee 1983) when
 // it is a rectangle in the world (a matrix that shears the
-// cube makes parallelograms of its faces) and its solid angle is neither tiny nor close to a
-// hemisphere (kMinSolidAngle, kMaxSolidAngle); else uniform by world area on it. From inside, all
+// cube makes parallelograms of its faces), x is near it (kReach) and its solid angle is neither
+// tiny nor close to a hemisphere (kMinSolidAngle, kMaxSolidAngle); else uniform by world area on it. From inside, all
 // six by world area. The density depends on the shading point and, per unit area, on the point
 // of the face: next-event estimation and a BSDF ray that hits the cube ask for it with both, so
 // multiple importance sampling weighs with the density the point was drawn with.
@@ -45,6 +45,12 @@ public:
     // the edges all tend to the face's, and it divides by that distance), and its directions
     // graze the face, where a small error in a direction is a large one in the point.
     static constexpr double kMaxSolidAngle = 6.22;
+    // Farther from a face's centre than this many half-diagonals (one diagonal: its bounding
+    // sphere seen within 30° of its centre), a face is sampled by area too, as Cycles samples a
+    // triangle by area beyond its longest edge from its plane: there the solid angle and the
+    // spherical rectangle cost more than the variance they save (the Cornell box: time -30%,
+    // variance +2%; bench/RESULTS.md). Closer, cos_light / d² varies over the face without bound.
+    static constexpr double kReach = 2.0;
 
 private:
     // The probability of choosing each face from x (0 for faces that cannot be seen from there).
@@ -56,10 +62,13 @@ private:
         return rectangle_[k] && omega >= kMinSolidAngle && omega <= kMaxSolidAngle;
     }
     float density(const glm::vec3& x, const glm::vec3& p, int k, double prob, double omega) const;
+    // Face k's solid angle from x where it is sampled in it (a rectangle x is near), else 0.
+    double sampled_solid_angle(const glm::vec3& x, int k) const;
 
     glm::vec3 corner_[6], edge_a_[6], edge_b_[6];  // face k = corner + [0,1]·edge_a + [0,1]·edge_b
     glm::vec3 centre_[6], normal_[6];
     float area_[6];
+    double reach2_[6];  // the square of kReach half-diagonals
     bool rectangle_[6];  // edge_a ⟂ edge_b in the world (a face the matrix does not shear)
     SphericalRectangle::Frame frame_[6];  // of the rectangles
     // The same in double, converted once (the solid angles are found in double).
