@@ -1,5 +1,6 @@
 // Packet traversal of the 4-wide BVH. The SIMD lanes are rays: at a node, each child box is
-// tested against all the packet's rays at once (four SSE registers of four rays), and a child is
+// tested against all the packet's rays at once (four SSE registers of four rays, or two AVX2
+// registers of eight where the CPU has AVX2: SseLanes, Avx2Lanes), and a child is
 // visited if any lane still wanting it enters it no farther than that lane's nearest hit so far.
 // Every lane keeps its own nearest hit, and its box test is the single-ray test
 // (bvh_traverse.cpp) evaluated in another lane, so a lane visits every box its single ray would
@@ -19,8 +20,11 @@
 #endif
 
 #include "shapes/unit_shape_math4.h"
+#include "shapes/unit_shape_math8.h"
+#include "accel/bvh_box_test_avx2.h"
 #include "accel/bvh_mesh_leaf.h"
 #include "accel/bvh_ray.h"
+#include "accel/mesh_bvh.h"
 
 namespace whitted {
 namespace {
@@ -213,9 +217,15 @@ inline float horizontal_min(__m128 v) {
     return _mm_cvtss_f32(v);
 }
 
+// The largest of the four in every lane.
+inline __m128 broadcast_max(__m128 v) {
+    v = _mm_max_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1)));
+    return _mm_max_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 0, 3, 2)));
+}
+
 // Each lane's nearest hit so far (bvh_detail::offer_nearest's state).
 struct Nearest {
-    alignas(16) float best[kPacketSize];
+    alignas(32) float best[kPacketSize];  // loaded eight lanes at a time by Avx2Lanes
     std::uint32_t index[kPacketSize];
     ShapePart part[kPacketSize];
     bool found[kPacketSize];
@@ -282,6 +292,183 @@ inline void offer_instance(const Instance& inst, std::uint32_t index, const Ray 
     }
 }
 
+// The box tests of a node's children for the packet's lanes, four lanes per SSE step: the lanes
+// that enter each child (hit), their entry distances (enter_t) and, per child, a vector whose
+// smallest value is the nearest entry (key; +inf where no lane enters); and the leaves'
+// instances offered to the lanes (offer).
+struct SseLanes {
+    using Key = __m128;
+    const PacketRays& r;
+    explicit SseLanes(const PacketRays& rays) : r(rays) {}
+    static float smallest(Key k) { return horizontal_min(k); }
+    void offer(const Instance& inst, std::uint32_t index, const Ray (&rays)[kPacketSize], unsigned mask, float t_min,
+               float t_max, Nearest& nearest) const {
+        offer_instance(inst, index, rays, r, mask, t_min, t_max, _mm_set1_ps(t_min), _mm_set1_ps(t_max), nearest);
+    }
+
+    template <bool kSameSigns, bool kCommonOrigin>
+    void test(const __m128 (&rows)[6], const float* best, __m128 tmin, unsigned (&hit)[4],
+              float (&enter_t)[4][kPacketSize], Key (&key)[4]) const {
+        __m128 limit[kGroups];
+        for (int g = 0; g < kGroups; ++g) limit[g] = _mm_load_ps(&best[4 * g]);
+        if constexpr (kSameSigns && kCommonOrigin) {
+            // Cull the slots no lane can enter first, then test the lanes on the rest.
+            __m128 limit_max = limit[0];
+            for (int g = 1; g < kGroups; ++g) limit_max = _mm_max_ps(limit_max, limit[g]);
+            const unsigned slots = frustum_slots(r, rows, tmin, broadcast_max(limit_max));
+            alignas(16) float row_values[6][4];
+            for (int k = 0; k < 6; ++k) _mm_store_ps(row_values[k], rows[k]);
+            hit[0] = hit[1] = hit[2] = hit[3] = 0;
+            for (unsigned rest = slots; rest != 0; rest &= rest - 1) {
+                const int c = lowest_bit(rest);
+                __m128 plane[6];
+                for (int k = 0; k < 6; ++k) plane[k] = _mm_set1_ps(row_values[k][c]);
+                hit[c] = test_child<kSameSigns, kCommonOrigin>(r, plane, limit, tmin, enter_t[c], key[c]);
+            }
+        } else {
+            // All four children without a branch between them: four independent chains.
+            hit[0] = test_slot<kSameSigns, kCommonOrigin, 0>(r, rows, limit, tmin, enter_t[0], key[0]);
+            hit[1] = test_slot<kSameSigns, kCommonOrigin, 1>(r, rows, limit, tmin, enter_t[1], key[1]);
+            hit[2] = test_slot<kSameSigns, kCommonOrigin, 2>(r, rows, limit, tmin, enter_t[2], key[2]);
+            hit[3] = test_slot<kSameSigns, kCommonOrigin, 3>(r, rows, limit, tmin, enter_t[3], key[3]);
+        }
+    }
+};
+
+#ifdef WHITTED_BVH_AVX2
+// The same tests, and the leaves' shapes (shapes/unit_shape_math8.h), eight lanes per AVX2 step:
+// the same operations lane by lane (no fused multiply-add), so the same masks, entry distances
+// and hits. Its functions carry GCC's target attribute; the walk that uses it is compiled into a
+// function with the same attribute and [[gnu::flatten]] (dispatch_avx2), run only where the CPU
+// has AVX2.
+struct Avx2Lanes {
+    static constexpr int kOctets = kPacketSize / 8;
+    static_assert(kPacketSize % 8 == 0);
+    using Key = float;
+    const PacketRays& r;
+    __m256 o[kOctets][3], d[kOctets][3], inv[3][kOctets];
+    [[gnu::target("avx2")]] explicit Avx2Lanes(const PacketRays& rays) : r(rays) {
+        for (int h = 0; h < kOctets; ++h)
+            for (int a = 0; a < 3; ++a) {
+                o[h][a] = _mm256_set_m128(rays.o[2 * h + 1][a], rays.o[2 * h][a]);
+                d[h][a] = _mm256_set_m128(rays.d[2 * h + 1][a], rays.d[2 * h][a]);
+                inv[a][h] = _mm256_set_m128(rays.inv[a][2 * h + 1], rays.inv[a][2 * h]);
+            }
+    }
+    static float smallest(Key k) { return k; }
+
+    // All-ones in the lanes whose bit is set.
+    [[gnu::target("avx2")]] static __m256 lane_mask8(unsigned bits) {
+        const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+        return _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(bits)), bit), bit));
+    }
+
+    // offer4 for the eight lanes of octet h.
+    [[gnu::target("avx2")]] static void offer8(const packet_shapes::Span8& s, std::uint32_t index, int h,
+                                               unsigned lanes, __m256 tmin, __m256 tmax, Nearest& nearest) {
+        using packet_shapes::select;
+        const __m256 first = _mm256_cmp_ps(s.t0, tmin, _CMP_GT_OS);
+        const __m256 t = select(first, s.t0, s.t1);
+        const __m256 ok = _mm256_and_ps(
+            s.ok, _mm256_and_ps(_mm256_cmp_ps(t, tmin, _CMP_GT_OS), _mm256_cmp_ps(t, tmax, _CMP_LT_OS)));
+        const __m256 best = _mm256_load_ps(&nearest.best[8 * h]);
+        unsigned nearer = unsigned(_mm256_movemask_ps(_mm256_and_ps(ok, _mm256_cmp_ps(t, best, _CMP_LT_OS)))) & lanes;
+        unsigned tie = unsigned(_mm256_movemask_ps(_mm256_and_ps(ok, _mm256_cmp_ps(t, best, _CMP_EQ_OQ)))) & lanes;
+        for (; tie != 0; tie &= tie - 1) {  // equal distances: the lowest index
+            const int l = 8 * h + lowest_bit(tie);
+            if (nearest.found[l] && index < nearest.index[l]) nearer |= 1u << (l - 8 * h);
+        }
+        if (nearer == 0) return;
+        _mm256_store_ps(&nearest.best[8 * h], select(lane_mask8(nearer), t, best));
+        alignas(32) std::int32_t parts[8];
+        _mm256_store_si256(reinterpret_cast<__m256i*>(parts), select(first, s.part0, s.part1));
+        for (; nearer != 0; nearer &= nearer - 1) {
+            const int k = lowest_bit(nearer), l = 8 * h + k;
+            nearest.index[l] = index;
+            nearest.part[l] = ShapePart(parts[k]);
+            nearest.found[l] = true;
+        }
+    }
+
+    // offer_instance, eight lanes at a time.
+    [[gnu::target("avx2")]] void offer(const Instance& inst, std::uint32_t index, const Ray (&rays)[kPacketSize],
+                                       unsigned mask, float t_min, float t_max, Nearest& nearest) const {
+        if (inst.kind == ShapeKind::Cone || inst.rescale) {
+            offer_instance(inst, index, rays, r, mask, t_min, t_max, _mm_set1_ps(t_min), _mm_set1_ps(t_max), nearest);
+            return;
+        }
+        const __m256 tmin = _mm256_set1_ps(t_min), tmax = _mm256_set1_ps(t_max);
+        for (int h = 0; h < kOctets; ++h) {
+            const unsigned lanes = (mask >> (8 * h)) & 255u;
+            if (lanes == 0) continue;
+            __m256 oo[3], od[3];
+            packet_shapes::to_object_space8(inst, o[h], d[h], oo, od);
+            switch (inst.kind) {
+                case ShapeKind::Sphere: offer8(packet_shapes::sphere8(oo, od, int(lanes)), index, h, lanes, tmin, tmax, nearest); break;
+                case ShapeKind::Cube: offer8(packet_shapes::cube8(oo, od), index, h, lanes, tmin, tmax, nearest); break;
+                case ShapeKind::Cylinder: offer8(packet_shapes::cylinder8(oo, od), index, h, lanes, tmin, tmax, nearest); break;
+                case ShapeKind::Ellipsoid: offer8(packet_shapes::ellipsoid8(oo, od, int(lanes)), index, h, lanes, tmin, tmax, nearest); break;
+                case ShapeKind::Cone: case ShapeKind::Mesh: break;
+            }
+        }
+    }
+
+    template <bool kSameSigns, bool kCommonOrigin>
+    [[gnu::target("avx2")]] unsigned test_child8(const float (&plane)[6], const __m256 (&limit)[kOctets], __m256 tmin,
+                                                 float* enter_out, Key& key) const {
+        const __m256 inf = _mm256_set1_ps(std::numeric_limits<float>::infinity());
+        unsigned hit = 0;
+        __m256 k8 = inf;
+        for (int h = 0; h < kOctets; ++h) {
+            __m256 t_near[3], t_far[3];
+            for (int a = 0; a < 3; ++a) {
+                const __m256 p0 = _mm256_set1_ps(plane[a]), p1 = _mm256_set1_ps(plane[3 + a]);
+                const __m256 rel0 = kCommonOrigin ? p0 : _mm256_sub_ps(p0, o[h][a]);
+                const __m256 rel1 = kCommonOrigin ? p1 : _mm256_sub_ps(p1, o[h][a]);
+                const __m256 t0 = _mm256_mul_ps(rel0, inv[a][h]);
+                const __m256 t1 = _mm256_mul_ps(rel1, inv[a][h]);
+                t_near[a] = kSameSigns ? t0 : _mm256_min_ps(t0, t1);
+                t_far[a] = kSameSigns ? t1 : _mm256_max_ps(t0, t1);
+            }
+            // test_child's order of operands, so that NaN (an inactive lane) spreads as there.
+            const __m256 enter = _mm256_max_ps(_mm256_max_ps(tmin, t_near[0]), _mm256_max_ps(t_near[1], t_near[2]));
+            const __m256 leave = _mm256_min_ps(_mm256_min_ps(limit[h], t_far[0]), _mm256_min_ps(t_far[1], t_far[2]));
+            const __m256 in = _mm256_cmp_ps(enter, leave, _CMP_LE_OQ);
+            hit |= unsigned(_mm256_movemask_ps(in)) << (8 * h);
+            _mm256_store_ps(enter_out + 8 * h, enter);
+            k8 = _mm256_min_ps(k8, _mm256_max_ps(enter, _mm256_andnot_ps(in, inf)));
+        }
+        const __m128 k4 = _mm_min_ps(_mm256_castps256_ps128(k8), _mm256_extractf128_ps(k8, 1));
+        key = horizontal_min(k4);
+        return hit;
+    }
+
+    template <bool kSameSigns, bool kCommonOrigin>
+    [[gnu::target("avx2")]] void test(const __m128 (&rows)[6], const float* best, __m128 tmin, unsigned (&hit)[4],
+                                      float (&enter_t)[4][kPacketSize], Key (&key)[4]) const {
+        __m256 limit[kOctets];
+        for (int h = 0; h < kOctets; ++h) limit[h] = _mm256_load_ps(&best[8 * h]);
+        const __m256 tmin8 = _mm256_set_m128(tmin, tmin);
+        unsigned slots = 15;
+        if constexpr (kSameSigns && kCommonOrigin) {
+            __m256 m = limit[0];
+            for (int h = 1; h < kOctets; ++h) m = _mm256_max_ps(m, limit[h]);
+            const __m128 limit_max = _mm_max_ps(_mm256_castps256_ps128(m), _mm256_extractf128_ps(m, 1));
+            slots = frustum_slots(r, rows, tmin, broadcast_max(limit_max));
+        }
+        alignas(16) float row_values[6][4];
+        for (int k = 0; k < 6; ++k) _mm_store_ps(row_values[k], rows[k]);
+        hit[0] = hit[1] = hit[2] = hit[3] = 0;
+        for (unsigned rest = slots; rest != 0; rest &= rest - 1) {
+            const int c = lowest_bit(rest);
+            const float plane[6] = {row_values[0][c], row_values[1][c], row_values[2][c],
+                                    row_values[3][c], row_values[4][c], row_values[5][c]};
+            hit[c] = test_child8<kSameSigns, kCommonOrigin>(plane, limit, tmin8, enter_t[c], key[c]);
+        }
+    }
+};
+#endif
+
 // A box waiting on the stack, with the lanes that entered it and their entry distances (a lane
 // whose nearest hit has meanwhile come closer than its entry is dropped when it is popped).
 struct alignas(16) Entry {
@@ -290,14 +477,13 @@ struct alignas(16) Entry {
     unsigned mask;
 };
 
-template <bool kSameSigns, bool kCommonOrigin>
-unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const Ray (&rays)[kPacketSize], const PacketRays& r, unsigned active, float t_min, float t_max,
+template <bool kSameSigns, bool kCommonOrigin, class Lanes>
+unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const Ray (&rays)[kPacketSize],
+                  const PacketRays& r, const Lanes& lanes, unsigned active, float t_min, float t_max,
                   Hit (&hits)[kPacketSize]) {
     const Bvh4Node* nodes = bvh.nodes.data();
     const Instance* inst = instances.data();
     const __m128 tmin = _mm_set1_ps(t_min);
-
-    const __m128 tmax = _mm_set1_ps(t_max);
     Nearest nearest;
     float* best = nearest.best;
     for (int l = 0; l < kPacketSize; ++l) {
@@ -314,36 +500,12 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
     for (;;) {
         if (!Bvh4Node::is_leaf(ref)) {
             const Bvh4Node& n = nodes[ref];
-            __m128 limit[kGroups];
-            for (int g = 0; g < kGroups; ++g) limit[g] = _mm_load_ps(&best[4 * g]);
-            alignas(16) float enter_t[4][kPacketSize];
-            __m128 key[4];
+            alignas(32) float enter_t[4][kPacketSize];
+            typename Lanes::Key key[4];
             unsigned hit[4];
             __m128 rows[6];
             load_planes<kSameSigns, kCommonOrigin>(n, r, rows);
-            if constexpr (kSameSigns && kCommonOrigin) {
-                // Cull the slots no lane can enter first, then test the lanes on the rest.
-                __m128 limit_max = limit[0];
-                for (int g = 1; g < kGroups; ++g) limit_max = _mm_max_ps(limit_max, limit[g]);
-                limit_max = _mm_max_ps(limit_max, _mm_shuffle_ps(limit_max, limit_max, _MM_SHUFFLE(2, 3, 0, 1)));
-                limit_max = _mm_max_ps(limit_max, _mm_shuffle_ps(limit_max, limit_max, _MM_SHUFFLE(1, 0, 3, 2)));
-                const unsigned slots = frustum_slots(r, rows, tmin, limit_max);
-                alignas(16) float row_values[6][4];
-                for (int k = 0; k < 6; ++k) _mm_store_ps(row_values[k], rows[k]);
-                hit[0] = hit[1] = hit[2] = hit[3] = 0;
-                for (unsigned rest = slots; rest != 0; rest &= rest - 1) {
-                    const int c = lowest_bit(rest);
-                    __m128 plane[6];
-                    for (int k = 0; k < 6; ++k) plane[k] = _mm_set1_ps(row_values[k][c]);
-                    hit[c] = test_child<kSameSigns, kCommonOrigin>(r, plane, limit, tmin, enter_t[c], key[c]);
-                }
-            } else {
-                // All four children without a branch between them: four independent chains.
-                hit[0] = test_slot<kSameSigns, kCommonOrigin, 0>(r, rows, limit, tmin, enter_t[0], key[0]);
-                hit[1] = test_slot<kSameSigns, kCommonOrigin, 1>(r, rows, limit, tmin, enter_t[1], key[1]);
-                hit[2] = test_slot<kSameSigns, kCommonOrigin, 2>(r, rows, limit, tmin, enter_t[2], key[2]);
-                hit[3] = test_slot<kSameSigns, kCommonOrigin, 3>(r, rows, limit, tmin, enter_t[3], key[3]);
-            }
+            lanes.template test<kSameSigns, kCommonOrigin>(rows, best, tmin, hit, enter_t, key);
             if (!kSameSigns) {
                 // Unused slots have lo = +inf > hi = -inf, which min/max made infinite boxes.
                 const int used = _mm_movemask_ps(_mm_cmple_ps(_mm_load_ps(n.box[0]), _mm_load_ps(n.box[3])));
@@ -364,7 +526,7 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
                 int count = 0;
                 for (unsigned rest = children; rest != 0; rest &= rest - 1) {
                     c = lowest_bit(rest);
-                    const Candidate e{horizontal_min(key[c]), c};
+                    const Candidate e{Lanes::smallest(key[c]), c};
                     int k = count++;
                     while (k > 0 && cand[k - 1].key < e.key) {
                         cand[k] = cand[k - 1];
@@ -386,7 +548,7 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
         } else {
             const std::uint32_t first = Bvh4Node::leaf_first(ref), end = first + Bvh4Node::leaf_count(ref);
             for (std::uint32_t i = first; i < end; ++i)
-                offer_instance(inst[i], i, rays, r, mask, t_min, t_max, tmin, tmax, nearest);
+                lanes.offer(inst[i], i, rays, mask, t_min, t_max, nearest);
         }
         // Pop, dropping the lanes whose nearest hit is now closer than their entry into the box.
         for (;;) {
@@ -415,13 +577,33 @@ unsigned traverse(const Bvh& bvh, const std::vector<Instance>& instances, const 
 }
 
 // The walk for the packet's kind of rays (one origin? one sign per axis?).
+template <class Lanes>
+unsigned dispatch_with(const Bvh& bvh, const std::vector<Instance>& instances, const Ray (&rays)[kPacketSize],
+                       const PacketRays& r, const Lanes& lanes, unsigned active, float t_min, float t_max,
+                       Hit (&hits)[kPacketSize]) {
+    if (r.common_origin)
+        return r.same_signs ? traverse<true, true>(bvh, instances, rays, r, lanes, active, t_min, t_max, hits)
+                            : traverse<false, true>(bvh, instances, rays, r, lanes, active, t_min, t_max, hits);
+    return r.same_signs ? traverse<true, false>(bvh, instances, rays, r, lanes, active, t_min, t_max, hits)
+                        : traverse<false, false>(bvh, instances, rays, r, lanes, active, t_min, t_max, hits);
+}
+
+#ifdef WHITTED_BVH_AVX2
+[[gnu::target("avx2"), gnu::flatten]] unsigned dispatch_avx2(const Bvh& bvh, const std::vector<Instance>& instances,
+                                                             const Ray (&rays)[kPacketSize], const PacketRays& r,
+                                                             unsigned active, float t_min, float t_max,
+                                                             Hit (&hits)[kPacketSize]) {
+    return dispatch_with(bvh, instances, rays, r, Avx2Lanes(r), active, t_min, t_max, hits);
+}
+#endif
+
 unsigned dispatch(const Bvh& bvh, const std::vector<Instance>& instances, const Ray (&rays)[kPacketSize],
                   const PacketRays& r, unsigned active, float t_min, float t_max, Hit (&hits)[kPacketSize]) {
-    if (r.common_origin)
-        return r.same_signs ? traverse<true, true>(bvh, instances, rays, r, active, t_min, t_max, hits)
-                            : traverse<false, true>(bvh, instances, rays, r, active, t_min, t_max, hits);
-    return r.same_signs ? traverse<true, false>(bvh, instances, rays, r, active, t_min, t_max, hits)
-                        : traverse<false, false>(bvh, instances, rays, r, active, t_min, t_max, hits);
+#ifdef WHITTED_BVH_AVX2
+    // Where the CPU has AVX2 (the switch the walk tests turn): eight lanes per box test.
+    if (mesh_detail::use_avx2) return dispatch_avx2(bvh, instances, rays, r, active, t_min, t_max, hits);
+#endif
+    return dispatch_with(bvh, instances, rays, r, SseLanes(r), active, t_min, t_max, hits);
 }
 
 }  // namespace

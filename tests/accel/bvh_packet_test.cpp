@@ -15,6 +15,7 @@
 #include "accel/bvh_packet.h"
 #include "accel/bvh_test_scenes.h"
 #include "accel/instance_geometry.h"
+#include "accel/walk_both_ways.h"
 
 namespace whitted {
 namespace {
@@ -97,7 +98,12 @@ std::vector<Packet> random_packets(const std::vector<Ray>& rays) {
     return packets;
 }
 
-TEST(BvhPacket, CoherentCameraPacketsMatchSingleRays) {
+// Each test runs with the box tests in SSE (four lanes a step) and, where the CPU has it, AVX2
+// (eight).
+class BvhPacket : public WalkBothWays {};
+INSTANTIATE_TEST_SUITE_P(BoxTest, BvhPacket, ::testing::Values(true, false), walk_name);
+
+TEST_P(BvhPacket, CoherentCameraPacketsMatchSingleRays) {
     for (std::uint32_t seed : {1u, 2u, 3u}) {
         SCOPED_TRACE(seed);
         RandomScene scene = random_scene(seed, 300 + 100 * int(seed), 10.0f);
@@ -122,7 +128,7 @@ TEST(BvhPacket, CoherentCameraPacketsMatchSingleRays) {
     }
 }
 
-TEST(BvhPacket, IncoherentPacketsMatchSingleRays) {
+TEST_P(BvhPacket, IncoherentPacketsMatchSingleRays) {
     for (std::uint32_t seed : {4u, 5u, 6u, 7u}) {
         SCOPED_TRACE(seed);
         RandomScene scene = random_scene(seed, 200 + 80 * int(seed), 10.0f);
@@ -137,7 +143,7 @@ TEST(BvhPacket, IncoherentPacketsMatchSingleRays) {
     }
 }
 
-TEST(BvhPacket, ParallelRaysFromDifferentOrigins) {
+TEST_P(BvhPacket, ParallelRaysFromDifferentOrigins) {
     // Same direction, origins a small grid apart (an orthographic camera): the packet's
     // directions agree in sign, its origins differ; also directions with zero components.
     RandomScene scene = random_scene(10, 500, 10.0f);
@@ -163,7 +169,7 @@ TEST(BvhPacket, ParallelRaysFromDifferentOrigins) {
     EXPECT_GT(hits, lanes / 5);
 }
 
-TEST(BvhPacket, LanesMissingEverythingAndInactiveLanes) {
+TEST_P(BvhPacket, LanesMissingEverythingAndInactiveLanes) {
     RandomScene scene = random_scene(8, 400, 10.0f);
     Bvh bvh = build_bvh(scene.instances);
     std::vector<Ray> rays = random_rays(8, 8000, 10.0f, scene.instances);
@@ -194,7 +200,7 @@ TEST(BvhPacket, LanesMissingEverythingAndInactiveLanes) {
     expect_same_as_single_rays(bvh, scene.instances, none, 0.0f, kInf, -1);
 }
 
-TEST(BvhPacket, TiesGoToTheLowestInstanceIndex) {
+TEST_P(BvhPacket, TiesGoToTheLowestInstanceIndex) {
     // Identical instances: every hit is a tie among many; lanes from one origin and from many.
     std::vector<Instance> same;
     std::mt19937 rng(3);
@@ -212,7 +218,7 @@ TEST(BvhPacket, TiesGoToTheLowestInstanceIndex) {
     EXPECT_GT(hits, 500);
 }
 
-TEST(BvhPacket, RaysStartingInsideObjects) {
+TEST_P(BvhPacket, RaysStartingInsideObjects) {
     RandomScene scene = random_scene(9, 500, 8.0f);
     Bvh bvh = build_bvh(scene.instances);
     std::mt19937 rng(9);
@@ -233,7 +239,7 @@ TEST(BvhPacket, RaysStartingInsideObjects) {
     }
 }
 
-TEST(BvhPacket, EmptyScene) {
+TEST_P(BvhPacket, EmptyScene) {
     std::vector<Instance> none;
     Bvh bvh = build_bvh(none);
     Packet p;
@@ -241,7 +247,7 @@ TEST(BvhPacket, EmptyScene) {
     EXPECT_EQ(intersect_nearest_packet(bvh, none, p.rays, p.active, 0.0f, kInf, hits), 0u);
 }
 
-TEST(BvhPacket, SingleInstance) {
+TEST_P(BvhPacket, SingleInstance) {
     std::vector<Instance> one{make_instance(glm::mat4(1.0f), ShapeKind::Sphere, 0)};
     Bvh bvh = build_bvh(one);
     Packet p;
