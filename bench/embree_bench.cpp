@@ -41,6 +41,7 @@
 #include <embree3/rtcore.h>
 
 #include "accel/instance_geometry.h"
+#include "accel/mesh_bvh.h"
 #include "bench_scenes.h"
 #include "integrator/glass_transmittance.h"
 #if __has_include("accel/bvh_packet.h")
@@ -759,6 +760,15 @@ void bm_check(benchmark::State& state, Fixture& (*fixture)(), Engine engine, Pro
     c["MB_embree"] = esc.rss_delta_mb;
 }
 
+// A whitted benchmark with its walks in SSE where the CPU has AVX2 (the switch the walk tests
+// turn): "_sse" beside the default, interleaved in one process.
+template <auto Fn>
+void with_sse(benchmark::State& state, Fixture& (*fixture)(), Engine engine, Proto proto) {
+    set_mesh_walks_use_avx2(false);
+    Fn(state, fixture, engine, proto);
+    set_mesh_walks_use_avx2(true);
+}
+
 std::string engine_name(Engine e, Proto p) {
     if (e == Engine::Whitted) return "whitted_x1";
     if (e == Engine::WhittedPacket) return "whitted_x" + std::to_string(kWhittedPacket);
@@ -809,11 +819,27 @@ void register_all() {
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();
         };
+        const bool avx2 = set_mesh_walks_use_avx2(true);
+        auto add_sse = [&](const char* kind, Engine e, auto fn) {
+            if (!avx2) return;
+            std::string name = std::string(kind) + "_" + s.name + "/" + engine_name(e, Proto::User) + "_sse";
+            benchmark::RegisterBenchmark(name.c_str(), fn, s.fixture, e, Proto::User)
+                ->ArgName("threads")
+                ->Arg(1)
+                ->Arg(2)
+                ->Unit(benchmark::kMillisecond)
+                ->UseRealTime();
+        };
         add("primary", Engine::Whitted, Proto::User, bm_primary);
-        if constexpr (kWhittedPacket > 0) add("primary", Engine::WhittedPacket, Proto::User, bm_primary);
+        add_sse("primary", Engine::Whitted, with_sse<bm_primary>);
+        if constexpr (kWhittedPacket > 0) {
+            add("primary", Engine::WhittedPacket, Proto::User, bm_primary);
+            add_sse("primary", Engine::WhittedPacket, with_sse<bm_primary>);
+        }
         for (Proto p : s.protos)
             for (Engine e : engines) add("primary", e, p, bm_primary);
         add("shadow", Engine::Whitted, Proto::User, bm_shadow);
+        add_sse("shadow", Engine::Whitted, with_sse<bm_shadow>);
         for (Proto p : s.protos) add("shadow", Engine::Embree1, p, bm_shadow);
     }
 }
