@@ -433,7 +433,7 @@ struct Avx2Lanes {
             // test_child's order of operands, so that NaN (an inactive lane) spreads as there.
             const __m256 enter = _mm256_max_ps(_mm256_max_ps(tmin, t_near[0]), _mm256_max_ps(t_near[1], t_near[2]));
             const __m256 leave = _mm256_min_ps(_mm256_min_ps(limit[h], t_far[0]), _mm256_min_ps(t_far[1], t_far[2]));
-            const __m256 in = _mm256_cmp_ps(enter, leave, _CMP_LE_OQ);
+            const __m256 in = _mm256_cmp_ps(enter, leave, _CMP_LE_OS);
             hit |= unsigned(_mm256_movemask_ps(in)) << (8 * h);
             _mm256_store_ps(enter_out + 8 * h, enter);
             k8 = _mm256_min_ps(k8, _mm256_max_ps(enter, _mm256_andnot_ps(in, inf)));

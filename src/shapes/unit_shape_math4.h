@@ -97,7 +97,7 @@ inline Span4 sphere4(const __m128 (&o)[3], const __m128 (&d)[3], int lanes) {
     const __m128 disc = _mm_mul_ps(a, _mm_sub_ps(quarter, dot3(lx, ly, lz, lx, ly, lz)));
     const __m128 meets = _mm_cmpge_ps(disc, _mm_setzero_ps());  // false for NaN, as !(disc >= 0)
     if ((_mm_movemask_ps(meets) & lanes) == 0) {
-        s.ok = _mm_setzero_ps();
+        s.ok = s.t0 = s.t1 = _mm_setzero_ps();  // (t0, t1: defined, though no lane reads them)
         return s;
     }
     const __m128 c = _mm_sub_ps(dot3(o[0], o[1], o[2], o[0], o[1], o[2]), quarter);

@@ -104,7 +104,7 @@ WHITTED_AVX2 Span8 sphere8(const __m256 (&o)[3], const __m256 (&d)[3], int lanes
     const __m256 disc = _mm256_mul_ps(a, _mm256_sub_ps(quarter, dot3(lx, ly, lz, lx, ly, lz)));
     const __m256 meets = _mm256_cmp_ps(disc, _mm256_setzero_ps(), _CMP_GE_OS);
     if ((_mm256_movemask_ps(meets) & lanes) == 0) {
-        s.ok = _mm256_setzero_ps();
+        s.ok = s.t0 = s.t1 = _mm256_setzero_ps();  // (t0, t1: defined, though no lane reads them)
         return s;
     }
     const __m256 c = _mm256_sub_ps(dot3(o[0], o[1], o[2], o[0], o[1], o[2]), quarter);
