@@ -4,6 +4,7 @@
 // and the samples' 1 / density averages to the cube's solid angle, summed over the faces the
 // point is in front of with the closed form of Van Oosterom and Strackee (1983); from inside,
 // to 4π. And the furnace inside a stretched emissive cube.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -165,6 +166,24 @@ TEST(CubeLight, AFaceSeenAloneIsSampledUniformlyInItsSolidAngle) {
         const glm::vec3 x = (0.05f + d) * down;
         for (int i = 0; i < 256; ++i)
             ASSERT_FLOAT_EQ(cube.sample(x, sampler.get2d({0, 0, std::uint32_t(i)}, 3)).pdf_area * a * b, 1.0f) << "d " << d;
+    }
+    // The reach is measured from the face's centre, not its plane: 0.1 below the plane but 1.3 off
+    // the centre along the face (the point also sees a side face), the bottom face's samples all
+    // have the same density per unit area (by area); 0.1 below the centre they do not.
+    const glm::vec3 along = glm::vec3(m * glm::vec4(1, 0, 0, 0));  // the face's long edge
+    for (const float off : {1.3f, 0.0f}) {
+        const glm::vec3 x = 0.15f * down + off * along;
+        float lo = INFINITY, hi = 0;
+        for (int i = 0; i < 256; ++i) {
+            const CubeLight::Sample s = cube.sample(x, sampler.get2d({0, 0, std::uint32_t(i)}, 3));
+            if (s.normal.y > -0.5f) continue;  // a side face's
+            lo = std::min(lo, s.pdf_area), hi = std::max(hi, s.pdf_area);
+        }
+        ASSERT_GT(hi, 0.0f) << "no sample on the bottom face, off " << off;
+        if (off > 0)
+            EXPECT_EQ(lo, hi) << "by area";
+        else
+            EXPECT_GT(hi, 1.5f * lo) << "by solid angle";
     }
     // Sheared: the face's edges not perpendicular; the same point close below it.
     const glm::mat4 sheared = glm::rotate(glm::scale(glm::mat4(1.0f), {a, 0.1f, b}), 0.4f, glm::vec3(0, 1, 0));
