@@ -1,5 +1,6 @@
 #include "film/exr_decode.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <exception>
@@ -10,6 +11,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfTileDescription.h>
 
 namespace whitted {
 namespace {
@@ -36,10 +38,44 @@ private:
     std::uint64_t pos_ = 0;
 };
 
+// The header alone, checked before OpenEXR's InputFile sizes its line and tile buffers from it (a
+// data window with max < min, or thousands of channels, would have it ask for gigabytes): the
+// window within the limits, and the bytes of the largest buffer it may allocate (256 lines of the
+// widest, or a tile, at 4 bytes a sample in every channel) no more than the float RGB image of the
+// largest size the limits allow.
+std::string header_problem(std::string_view bytes, const ImageLimits& limits) {
+    if (bytes.size() < 8) return "the file ends early (truncated)";
+    int version = 0;
+    std::memcpy(&version, bytes.data() + 4, sizeof version);  // little-endian, as the format
+    MemoryStream stream(bytes);
+    stream.seekg(8);
+    Imf::Header header;
+    header.readFrom(stream, version);
+    const Imath::Box2i window = header.dataWindow();
+    const long long w = (long long)window.max.x - window.min.x + 1, h = (long long)window.max.y - window.min.y + 1;
+    if (std::string problem = image_size_problem(w, h, limits); !problem.empty()) return problem;
+    long long channels = 0;
+    for (auto c = header.channels().begin(); c != header.channels().end(); ++c) {
+        if (c.channel().xSampling < 1 || c.channel().ySampling < 1) return "a channel with a sampling rate below 1";
+        ++channels;
+    }
+    long long across = w, down = 256;
+    if (header.hasTileDescription()) {
+        const Imf::TileDescription& t = header.tileDescription();
+        across = (long long)t.xSize, down = (long long)t.ySize;
+        if (across > limits.max_side || down > limits.max_side) return "a tile larger than an image may be";
+    }
+    const long long budget = (long long)limits.max_pixels * 12;
+    if (channels > 4096 || across * down > budget / 4 / std::max(channels, 1LL))
+        return "too many channels (" + std::to_string(channels) + ") for an image of this width";
+    return "";
+}
+
 }  // namespace
 
 std::string decode_exr(std::string_view bytes, const ImageLimits& limits, LinearImage& out) {
     try {
+        if (std::string problem = header_problem(bytes, limits); !problem.empty()) return problem;
         MemoryStream stream(bytes);
         Imf::InputFile file(stream);
         const Imf::Header& header = file.header();

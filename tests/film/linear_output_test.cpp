@@ -5,13 +5,18 @@
 #include <fstream>
 #include <unistd.h>
 #include <string>
+#include <vector>
 
 #include <OpenEXR/ImfArray.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfRgbaFile.h>
 #include <gtest/gtest.h>
 
 #include "film/film.h"
 #include "film/image_io.h"
+#include "film/linear_decode.h"
 
 namespace whitted {
 namespace {
@@ -95,4 +100,49 @@ TEST(LinearOutput, AFailedWriteLeavesNothingBehind) {
 }
 
 }  // namespace
+// A header whose data window runs backwards (max.x < min.x) and is 65,498 lines tall: OpenEXR would
+// size its line buffers from it (2 GB) before a pixel is read. The header is checked first: a located
+// refusal, no allocation (the fuzzer's input, kept).
+TEST(LinearOutput, AnExrHeaderThatWouldAskForGigabytesIsRefusedFirst) {
+    const std::string bytes(
+        "\x76\x2f\x31\x01\x02\x00\x00\x00\x63\x68\x61\x6e\x6e\x65\x6c\x73\x00\x63\x68\x6c\x69\x73\x74\x00"
+        "\x37\x00\x00\x00\x42\x00\x02\x00\x00\x00\x00\x00\x00\x00\x01\x00\x00\x00\x01\x00\x00\x00\x47\x00"
+        "\x02\x00\x00\x00\x00\x00\x00\x00\x01\x00\x00\x00\x01\x00\x00\x00\x00\x63\x6f\x69\x6f\x6e\x00\x63"
+        "\x6f\x6d\x70\x72\x65\x73\x73\x69\x6f\x6e\x00\x01\x00\x00\x00\x03\x64\x61\x74\x61\x57\x69\x6e\x64"
+        "\x6f\x77\x00\x62\x6f\x78\x32\x69\x00\x00\x10\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\xd9\xff"
+        "\x00\x00\x05\x00\x00\x00\x64\x69\x73\x70\x6c\x61\x00\x00\x00\x00\x01\x06\x00\x00\x00\x00\x00\x00"
+        "\x00\x00\x70\x0f\x00\x69\x78\x65\x6c\x41\x73\x70\x00\x00\x00\x00\x00\x00\xb2\xb2\xb2\xb2\xb2\xb2"
+        "\x00\x00\x00\x85\x2d\x1f\x90",
+        175);
+    LinearImage out;
+    const std::string problem = decode_linear_image(bytes, ImageLimits{}, out);
+    EXPECT_EQ(problem, "16767233x1281 pixels: more than 16384 across or down");
+}
+
+// Thousands of channels: 256 lines of them would be more than the largest image the limits allow.
+// Refused from the header (OpenEXR itself would read the file).
+TEST(LinearOutput, AnExrOfTooManyChannelsIsRefusedFromItsHeader) {
+    const std::string path = temp_path("channels.exr");
+    {
+        Imf::Header header(1000, 1);
+        header.compression() = Imf::NO_COMPRESSION;
+        for (int c = 0; c < 5000; ++c) {
+            std::string name = c == 0 ? "R" : "c";
+            if (c > 0) name += std::to_string(c);
+            header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+        }
+        std::vector<float> zeros(1000, 0.0f);
+        Imf::FrameBuffer fb;
+        fb.insert("R", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(zeros.data()), sizeof(float), 0));
+        Imf::OutputFile file(path.c_str(), header);
+        file.setFrameBuffer(fb);
+        file.writePixels(1);
+    }
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    LinearImage out;
+    EXPECT_EQ(decode_linear_image(bytes, ImageLimits{}, out), "too many channels (5000) for an image of this width");
+    std::remove(path.c_str());
+}
+
 }  // namespace whitted
